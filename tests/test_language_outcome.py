@@ -1070,3 +1070,41 @@ def test_braking_said_with_the_brake_as_object(text, intent):
 )
 def test_a_brake_beside_a_road_user_cutting_in_is_forced(text, intent):
     assert read(text).intent == intent
+
+
+# a contact noun whose verb of happening is denied after it: it did not happen (the ego's act decides
+# how close it came); near-miss negatives: a denied verb that says what the contact did, and one that
+# happened
+NEVER_OCCURRED = [
+    ("I had to brake hard. A collision did not take place, but my son was crying.", "near_miss"),
+    ("The truck swerved into my lane, I braked, the crash didn't happen thankfully.", "near_miss"),
+    ("Had to swerve; contact never occurred.", "near_miss"),
+    ("I slammed on, and a collision has not occurred.", "near_miss"),
+    ("The scooter ran the light and I stood on the brakes; the impact never came.", "near_miss"),
+    ("The collision did not stop him, he rode on.", "collision"),
+    ("The crash happened at the lights.", "collision"),
+    ("A collision took place at the junction.", "collision"),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), NEVER_OCCURRED)
+def test_a_contact_that_never_occurred(text: str, intent: str) -> None:
+    assert _intent(text) == intent
+
+
+# a passive of a denying verb said of trouble, or of a pronoun after the ego's escape: what was coming
+# did not happen; near-miss negatives: a route avoided, and no escape said before the pronoun
+AVERTED = [
+    ("A moped came past the bus. I stepped on the brake and it was avoided.", "near_miss"),
+    ("Lorry pulled out, I braked and thankfully it was avoided.", "near_miss"),
+    ("The rider swerved in front; disaster was averted by my quick braking.", "near_miss"),
+    ("A child ran out, I braked and tragedy was avoided.", "near_miss"),
+    ("I slowed down and the danger was avoided.", "near_miss"),
+    ("The motorway was closed so it was avoided.", None),
+    ("A cyclist was ahead of me; it was avoided.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), AVERTED)
+def test_trouble_averted(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent

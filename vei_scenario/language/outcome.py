@@ -698,12 +698,61 @@ def _denied_after(words: list[str], i: int) -> str | None:
     """A contact noun at ``i`` as the subject of a passive denying verb after it in its clause
     ("collision avoided", "a crash was narrowly averted"): "hedged" with a hedge, else "denied"."""
     after = words[i + 1 : i + 5]
+    if _never_occurred(words[i + 1 : i + 6]):
+        return "denied"  # ("a collision did not take place", "the crash never happened")
     for k, x in enumerate(after):
         if x.endswith("ed") and _lemmas(x) & _DENYING_VERBS:
             return "hedged" if set(after[:k]) & (HEDGES | {"just"}) else "denied"
         if x not in ("was", "is", "were", "been", "being", "be", "has", "had", "only", "just") and x not in HEDGES:
             return None
     return None
+
+
+#: Verbs (lemmas) of an event's happening: a contact noun as their denied subject did not happen.
+_OCCURRING = frozenset(("happen", "occur", "take", "result", "ensue", "materialise", "materialize", "eventuate"))
+#: Auxiliaries between an event's noun and the negator of its verb ("did not", "has not", "had never").
+_AUXILIARIES = frozenset(("did", "does", "do", "has", "have", "had", "was", "were", "is", "thankfully", "luckily"))
+
+
+def _never_occurred(after: list[str]) -> bool:
+    """Whether the words ``after`` a contact noun deny that it happened: auxiliaries, a negator, then
+    a verb of happening ("did not take place", "didn't happen", "has not occurred", "never
+    happened", "never came" at its clause's end); not "did not stop him", whose verb says what the
+    contact did."""
+    k = 0
+    while k < len(after) and after[k] in _AUXILIARIES:
+        k += 1
+    if k >= len(after) or after[k] not in ("not", "never"):
+        return False
+    verb = after[k + 1 : k + 2]
+    if verb and _lemmas(verb[0]) & {"come"}:
+        return len(after) == k + 2  # ("the impact never came"; not "never came to court")
+    return bool(verb) and bool(_lemmas(verb[0]) & _OCCURRING) and (verb[0] != "take" or "place" in after)
+
+
+#: Pronouns that stand for what a sentence told was coming ("I braked and it was avoided").
+_THAT_EVENT = frozenset(("it", "this", "that", "which"))
+
+
+def _averted(words: list[str], i: int, before: list[str]) -> bool:
+    """A passive of a denying verb at ``i`` whose subject is trouble or a pronoun for it ("disaster
+    was averted", "the danger was avoided", "I stepped on the brake and it was avoided"): what was
+    coming did not happen. A pronoun stands for a contact only after an escape in its sentence
+    (``before``: its words up to ``i``); "the motorway was closed so it was avoided" is a route."""
+    if not (words[i].endswith("ed") and _lemmas(words[i]) & _DENYING_VERBS):
+        return False
+    j = i - 1
+    while j >= 0 and (words[j] in HEDGES or words[j] in ("just", "only", "luckily", "thankfully", "fortunately")):
+        j -= 1
+    if j < 1 or words[j] not in ("was", "were", "been", "is", "got", "be"):
+        return False
+    k = j - 1
+    while k >= 0 and words[k] in ("has", "had", "have", "could", "would"):
+        k -= 1
+    subject = words[k] if k >= 0 else ""
+    if subject in _TROUBLE | _DISASTERS | _HARM_NOUNS:
+        return True
+    return subject in _THAT_EVENT and any(_lemmas(x) & _ESCAPING and _is_verb(x) for x in before)
 
 
 def _miss(words: list[str], i: int) -> bool:
@@ -732,16 +781,18 @@ def _near_noun(words: list[str], i: int) -> bool:
     return narrow or w == "near-miss"
 
 
-def _margin(words: list[str], i: int) -> str | None:
+def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) -> str | None:
     """A margin stated at ``i``: "with inches to spare", "stopped a foot short", "by a whisker",
-    "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe."""
+    "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe. ``lead``: the words of
+    its sentence before its clause ("I stopped, what, two metres to spare": the stop it is said of)."""
     w = words[i]
-    if w == "spare" and i > 0 and words[i - 1] == "to":
-        said = words[max(0, i - 6) : i - 1]
+    spare = w == "spare" and i > 0 and (words[i - 1] == "to" or _length_unit(words[i - 1]))  # ("a metre spare")
+    if spare:
+        said = words[max(0, i - 6) : i - (words[i - 1] == "to")]
         if set(said) & _WIDE or any(_vehicle_width(said, k) for k in range(len(said))):
             return SAFE  # ("plenty to spare", "with a full car width to spare")
         metres = _length_said(said)
-        stopped = any(_lemmas(x) & {"stop", "halt", "pull", "brake"} for x in words[max(0, i - 10) : i])
+        stopped = _gap_ahead([*lead, *words[:i]][-12:])
         if metres is not None and not stopped:
             # (a pass's clearance sideways; a longer one is a gap ahead, which the text tells as close)
             return SAFE if 1.5 <= metres <= 5.0 else NEAR_MISS if metres <= 1.0 or metres > 5.0 else None
@@ -757,6 +808,9 @@ def _margin(words: list[str], i: int) -> str | None:
         return SAFE  # ("plenty of room", "an ample margin", "enough distance", "adequate clearance")
     if w == "clear" and i > 0 and words[i - 1] in ("well", "safely", "comfortably"):
         return SAFE
+    small = _small_length_said(words, i, lead)
+    if small is not None:
+        return small
     stopping = any(_lemmas(x) & {"stop", "brake", "halt"} or x == "up" for x in words[max(0, i - 6) : i])
     if w == "time" and stopping and words[max(0, i - 2) : i] in (["in", "good"], ["in", "ample"], ["plenty", "of"]):
         return SAFE  # ("pulled up in good time", "stops in plenty of time": time to spare)
@@ -820,6 +874,72 @@ def _margin(words: list[str], i: int) -> str | None:
         before = words[max(0, i - 6) : i]
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
+    return None
+
+
+#: Verbs (lemmas) of stopping or of coming in ahead: a margin said after one is the gap left ahead,
+#: not a pass's clearance sideways ("stopped with 2 m to spare", "cut in with 2 metres to spare").
+_AHEAD_GAP = frozenset(("stop", "halt", "pull", "brake", "cut", "merge"))
+#: Verbs (lemmas) of passing someone: a margin said after one is the clearance sideways.
+_PASSING = frozenset(("pass", "overtake", "undertake", "go", "get", "squeeze", "drive", "ride", "come", "give"))
+
+
+def _gap_ahead(before: list[str]) -> bool:
+    """Whether the margin after ``before`` (its sentence up to it) is a gap ahead: the nearest verb of
+    stopping, cutting in or passing before it is one of stopping or cutting in ("the lorry slammed
+    on and we stopped, two metres to spare"); "overtook the bus, stopped at the lights, with ..."
+    reads its nearest verb."""
+    for x in reversed(before):
+        lem = _lemmas(x)
+        if lem & _AHEAD_GAP:
+            return True
+        if lem & _PASSING and _is_verb(x):
+            return False
+    return False
+
+
+def _length_unit(w: str) -> bool:
+    """A unit of length, or a vehicle's length ("two car lengths spare")."""
+    return w in _UNIT_METRES or w in ("length", "lengths")
+
+
+#: What bounds a length from above ("1 m max", "half a metre at most", "30 cm tops", "if that").
+_AT_MOST = (["max"], ["maximum"], ["tops"], ["at", "most"], ["at", "best"], ["if", "that"], ["or", "less"])
+#: Places a length may be said from: a margin to one of these is where someone is, not how close two
+#: road users came.
+_EDGES_AND_LINES = _PLACES | _FURNITURE | frozenset(("edge", "line", "marking", "markings", "gutter", "centre-line"))
+#: What follows a unit when the length is a size, not a margin ("a 50 cm wide trailer").
+_SIZE_WORDS = frozenset(("wide", "long", "high", "tall", "deep", "across", "thick"))
+#: Words after "left" that make it a side, not what was left ("2 m left of the line", "left lane"); a
+#: verb after "left to" makes it a distance still to go ("200 m left to go").
+_LEFT_AS_SIDE = frozenset(("of", "on", "in", "lane", "turn", "side", "hand", "-hand", "for", "edge", "kerb"))
+
+
+def _small_length_said(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) -> str | None:
+    """A margin said as a length at the unit ``words[i]``: bounded from above ("1 m max", "half a
+    metre at most", "50 cm tops"), the clearance of a pass ("passed me with maybe 50 cm"), or what was
+    left after a stop ("stopped with about 1 m left", "stops w/ ~2 m left"). A near miss when it is a
+    metre or less (a gap ahead after a stop, up to five); None otherwise: how wide a pass was is read
+    by the rest of :func:`_margin`."""
+    if words[i] not in _UNIT_METRES:
+        return None
+    metres = _length_said(words[max(0, i - 3) : i + 1])
+    if metres is None:
+        return None
+    after = words[i + 1 : i + 3]
+    if any(after[: len(b)] == b for b in _AT_MOST):
+        return NEAR_MISS if metres <= 1.0 else None
+    if after[:1] and after[0] in _SIZE_WORDS:
+        return None  # ("with a 50 cm wide box on the back")
+    if set(words[i + 1 : i + 5]) & _EDGES_AND_LINES:
+        return None  # ("rode with 50 cm to the kerb", "stopped with 2 m left to the stop line": a place)
+    said_with = {"with", "w"} & set(words[max(0, i - 5) : i])
+    before = [*lead, *words[:i]][-12:]
+    to_go = words[i + 2 : i + 3] == ["to"] and _is_verb(words[i + 3]) if i + 3 < len(words) else False
+    if said_with and after[:1] == ["left"] and not set(after[1:2]) & _LEFT_AS_SIDE and not to_go:
+        return NEAR_MISS if metres <= 5.0 and _gap_ahead(before) else None  # ("pulled up with a metre left")
+    if said_with and metres <= 1.0 and not _gap_ahead(before) and any(_lemmas(x) & _PASSING for x in before[-8:]):
+        return NEAR_MISS  # ("the bus passed me with maybe 50 cm")
     return None
 
 
@@ -1638,6 +1758,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in _UNHURT and _person_subject(words, i):
                 add("denied")  # ("the kid was fine": unhurt, however close it was)
                 continue
+            if _averted(words, i, sentence[: len(sentence) - len(words) + i]):
+                add("hedged" if _scoped(words, i, HEDGES, 3) else "denied")  # ("I braked and it was avoided")
+                continue
             if _relief(words, i):
                 add("lucky")
                 continue
@@ -1664,7 +1787,7 @@ def outcome_cues(said: str) -> list[Cue]:
             if w == "wide" and _passed_wide(sentence[: len(sentence) - len(words) + i], words[i + 1 :]):
                 add("safe")
                 continue
-            margin = _margin(words, i)
+            margin = _margin(words, i, sentence[: len(sentence) - len(words)])
             if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
                 add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
             elif margin is not None:
@@ -1679,7 +1802,7 @@ def outcome_cues(said: str) -> list[Cue]:
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
                 add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
-            if (w in _SAFE_WORDS or went) and not _denied_before(words, i):
+            if (w in _SAFE_WORDS or went) and not _denied_before(words, i) and not _sign_off(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
                 if not (w == "fine" and (i + 1 < len(words) or words[i - 1 : i] in (["a"], ["an"], ["the"]))):
                     add("unharmed" if w == "fine" else "safe")  # ("she's fine": how it left them)
@@ -1797,6 +1920,27 @@ def stated_intent(said: str) -> str | None:
     """``collision``, ``near_miss``, ``safe`` or None, from the reader's normalised, lowercased tokens
     joined by spaces (contractions as "did not")."""
     return decide(outcome_cues(said))
+
+
+#: Verbs a writer wishes a reader to go on safe with ("stay safe", "drive safely", "get home safe").
+_WISHING = frozenset(("stay", "be", "keep", "drive", "ride", "cycle", "travel", "get", "go", "walk", "arrive", "scoot"))
+#: Words of a path: an imperative with one is an instruction about someone ("pass the cyclist safely").
+_PATH_WORDS = frozenset(("past", "round", "around", "by", "through", "behind", "over", "across", "beside"))
+
+
+def _sign_off(words: list[str], i: int) -> bool:
+    """Whether a word of safety at ``i`` is a wish to the reader, a post's sign-off ("Stay safe guys",
+    "Drive safe out there, everyone", "ride safely all"): its clause opens with the bare verb of it, and
+    only whom it is wished to follows (no path, no noun it qualifies: "drive safely past the cyclist"
+    and "keep a safe distance" are instructions, and "the cyclist stayed safe" has its subject)."""
+    if i == 0 or i > 2 or words[0] not in _WISHING or words[0] not in _pos(words[0]).get("VERB", (words[0],)):
+        return False
+    rest = words[i + 1 :]
+    return len(rest) <= 3 and not set(rest) & _PATH_WORDS and not (rest and rest[0] in _SPACING)
+
+
+#: The nouns "safe" qualifies in an instruction about spacing ("keep safe distance", "stay safe gap").
+_SPACING = frozenset(("distance", "gap", "margin", "clearance", "speed", "pass", "space", "room", "berth", "following"))
 
 
 #: Words that say the pass was safe, wherever they stand ("passes safely", "a comfortable pass").
