@@ -66,7 +66,23 @@ def said_free(name: str, cfg: dict, before: list[str], after: list[str], own_nou
         return False
     if placed_in_road(after) or "then" in _this_sentence(before):
         return False
-    return not any(own_noun(w) for w in before[-2:])
+    subject, sentence = _subject(before), _this_sentence(before)
+    if subject == "it" and any(own_noun(w) for w in sentence):
+        return False  # ("we had a van pull out ... and it had to stop": the van its sentence is about)
+    return not any(own_noun(w) for w in before[-2:]) and not own_noun(subject)
+
+
+#: Words between a subject and its verb ("it had to stop", "the van was forced to brake").
+_BETWEEN = frozenset(("had", "has", "have", "to", "was", "were", "is", "been", "just", "also", "forced", "did"))
+
+
+def _subject(before: list[str]) -> str:
+    """The word right before a verb once the auxiliaries between are passed ("it" in "it had to
+    stop"), or "" where none is within a few words."""
+    k = len(before) - 1
+    while k >= 0 and len(before) - k <= _WINDOW and before[k] in _BETWEEN:
+        k -= 1
+    return before[k] if k >= 0 and len(before) - k <= _WINDOW else ""
 
 
 def drop_egos_reactions(behaviours: list) -> list:

@@ -41,7 +41,7 @@ from typing import Protocol
 
 from vei_scenario.language.discourse import PERCEIVE
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.reading import ActorSpec, Reading
+from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
 EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
@@ -202,7 +202,12 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> lis
     doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
         doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs)]
-    deeds = [s for s in specs if not {b[0] for b in s.behaviours} <= EGO_LIKE or s.relation is not None]
+    deeds = [  # (a parked lorry does nothing the ego meets: "a van hit my dad" beside it is no report of the van)
+        s
+        for a, s in zip(actors, specs)
+        if (not {b[0] for b in s.behaviours} <= EGO_LIKE or s.relation is not None)
+        and not (a.parked and stands_there(s))
+    ]
     if len(doubles) != 1 or not deeds or len(specs) < 2:
         return actors
     k = doubles[0]

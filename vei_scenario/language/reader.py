@@ -2372,7 +2372,7 @@ def _read(text: str) -> Reading:
             end, start = cfg.pop("_end", len(scanned)), cfg.pop("_start", None)
             a.across = a.across or kerb_ride.said_across(name, words, scanned[end:][:2])
             if start is not None and crossing_reaction.said_free(
-                name, cfg, scanned[max(0, start - 6) : start], scanned[max(0, end - 1) :],
+                name, cfg, scanned[:start], scanned[max(0, end - 1) :],
                 lambda w, kind=a.kind: _single_kind(w) == kind,
             ):  # fmt: skip
                 cfg[crossing_reaction.MARK] = 1.0  # (dropped after a crossing, once its name is final)
