@@ -289,3 +289,19 @@ def test_words_the_outcome_was_read_from_are_not_listed_as_unused(text, word):
     """A verb of contact read as the outcome (collision) was used: "not used" does not list it."""
     r = read(text)
     assert r.intent == "collision" and word not in r.ignored
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "09:10 lorry ahead at 40 m slows to 30 km/h\n09:11 lorry brakes gently to a halt in lane to unload",
+        "At the junction we yield; the bus on the main road goes on and a cyclist crosses behind it.",
+        "A van pulled out of a side road and it had to stop sharply.",
+    ],
+)
+def test_the_layers_carry_none_of_the_readers_own_marks(text):
+    """The reader marks behaviours for its own passes (words, a right of way); the layers a scenario
+    is written from hold only the parameters the behaviours take."""
+    for seed in (0, 1):
+        written = json.dumps(layers_from_text(text, seed=seed)["adversaries"])
+        assert '"_' not in written

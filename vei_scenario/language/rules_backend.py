@@ -142,6 +142,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             elif crit is None and intent == "safe":
                 crit = "safe"
             cfg, _ = _config(rng, bname, given, crit)
+            cfg = {k: v for k, v in cfg.items() if not k.startswith("_")}  # (the reader's own marks stay its own)
             if bname == "cross_in_front" and spec.kind == "e-scooter":
                 cfg.setdefault("agent", "sfm")  # the e-scooter rider is the social force model's
             if idx == 0:
