@@ -1179,6 +1179,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
             return None  # (letting someone go, or do anything: "lets the ego complete the turn")
         if lem & {"hang", "hold"} and "back" not in after:
             return None
+        if lem & {"wait"} and set(words[i + 1 : i + 8]) & _QUEUE:
+            return None  # ("we waited in the queue", "waiting at the lights": one's turn, not giving way)
         return "yield"
     return None
 
@@ -1836,11 +1838,15 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
             elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
+                if act is None and _lets_another_go(words, i, whole[at + i + 1 :]):
+                    act = "yield"  # ("I sat behind him", "we waved her across")
                 if act is not None:
                     add(act)
             elif _lemmas(w) & {"let", "give", "yield"} and _is_verb(w) and not w.endswith("ing"):
                 if _ego_acts(words, i) == "yield" and not _denied_before(words, i):
                     add("yield")  # (someone gives way or lets the other go: no conflict)
+            elif _is_verb(w) and _lets_another_go(words, i, whole[at + i + 1 :]):
+                add("yield")  # (anyone waits while another goes: "the bus waited behind me", "flashed us across")
             if (
                 _lemmas(w) & {"avoid", "dodge", "evade"}
                 and words[i + 1 : i + 2]
@@ -1859,6 +1865,53 @@ def outcome_cues(said: str) -> list[Cue]:
 _ONCE = frozenset(("once", "until", "till", "when", "after"))
 #: The particles of squeezing by someone ("squeezed past", "squeezed through").
 _SQUEEZE_BY = frozenset(("past", "by", "through", "between", "round", "around"))
+
+
+#: Verbs (lemmas) of staying put for someone ("waited for her", "sat behind him", "stopped while she crossed").
+_STAYING = frozenset(("wait", "sit", "stop", "pause", "hold", "hang", "idle", "stay"))
+#: What may stand between such a verb and whom it stays for ("sat there patiently while ...").
+_STAYING_FILLERS = frozenset(("there", "back", "tight", "put", "so", "just", "still", "quietly", "and"))
+#: Conjunctions that set the other's move beside the stay ("waited while she crossed", "until he'd gone").
+_WHILE = frozenset(("while", "whilst", "as", "until", "till"))
+#: Words of a queue: staying in one, or behind one, is waiting one's turn in traffic, not giving way.
+_QUEUE = frozenset(("queue", "queues", "traffic", "line", "jam", "tailback", "lights", "light", "signal", "signals"))
+#: Verbs (lemmas) of a signal to go ("waved me through", "flashed us across", "beckoned her over").
+_SIGNALLING = frozenset(("wave", "flash", "beckon", "signal", "motion", "gesture"))
+#: Where a signal sends the one it is given to.
+_ONWARD = frozenset(("through", "across", "on", "out", "past", "by", "ahead", "over", "forward", "round", "around"))
+#: Verbs (lemmas) of another's going by or across, after a conjunction of time ("while Mrs Reid crossed").
+_GOING_BY = frozenset(("cross", "pass", "go", "walk", "ride", "cycle", "come", "get", "squeeze", "overtake", "clear"))
+#: Subject pronouns that open the other's move in a clause of time ("while she crossed").
+_SUBJECT_PRONOUNS = frozenset(("he", "she", "they", "you", "we", "i"))
+
+
+def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
+    """Whether the verb at ``i`` (a finite verb, not denied) stays put for another road user or sends
+    one on: a stay for a road user ("waited for him", "stopped for the kids"), behind one ("sat behind
+    the cyclist", "waited behind me instead of squeezing past") or while one moves ("just sat there
+    while a lady crossed"), or a signal that sends a person on ("waved me through", "flashed us
+    across"). ``rest``: its sentence after it, conjunctions kept. Whoever does it, it is giving way.
+    Not a participle ("a man waiting to cross" is where he is), a stay in a queue or at the lights
+    (one's turn, not another's), nor a stay for something else ("waited for a gap")."""
+    w = words[i]
+    if w.endswith("ing") or _denied_before(words, i) or _forgone(words, i):
+        return False  # ("waiting at the corner", "didn't wait for me", "instead of waiting")
+    lem = _lemmas(w)
+    if lem & _SIGNALLING:
+        k = 1 if rest[:1] in (["the"], ["a"]) else 0
+        return len(rest) > k + 1 and names_road_user(rest[k : k + 1]) and rest[k + 1] in _ONWARD
+    if not lem & _STAYING or set(rest[:8]) & _QUEUE:
+        return False
+    k = 0
+    while k < len(rest) and (rest[k] in _STAYING_FILLERS or (rest[k].endswith("ly") and rest[k] != "only")):
+        k += 1
+    nxt, obj = (rest[k], rest[k + 1 : k + 5]) if k < len(rest) else ("", [])
+    if nxt in ("for", "behind"):
+        return names_road_user(obj[:3])  # ("waited for him"; not "waited for a gap")
+    if nxt in _WHILE and obj:
+        moved = any(_is_verb(x) and _lemmas(x) & _GOING_BY for x in obj[1:4])  # ("while Mrs Reid crossed")
+        return obj[0] in _SUBJECT_PRONOUNS or names_road_user(obj[:3]) or moved  # ("while she crossed")
+    return False
 
 
 def _hindsight(words: list[str], i: int) -> bool:
