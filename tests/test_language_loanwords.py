@@ -84,3 +84,31 @@ ACCENTED_NAMES = [
 @pytest.mark.parametrize(("text", "expected"), ACCENTED_NAMES)
 def test_an_accented_word_is_one_word(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
+
+
+#: A shared e-scooter named by its operator, before where it is or before its rider.
+OPERATOR_CASES = [
+    ("Our taxi was doing 30 when a lad on a Lime in the cycle lane to our right swerved into our lane.", ["e-scooter"]),
+    ("I was driving at 30 km/h when a Voi user cut across in front of me.", ["e-scooter"]),
+    ("Doing 40, a Tier rider came off the pavement on my left and crossed in front of me.", ["e-scooter"]),
+    ("I was doing 30 when a Dott across the crossing came into my path from the right.", ["e-scooter"]),
+    ("Driving at 30, two Bird riders came off the kerb on my right in front of me.", ["e-scooter", "e-scooter"]),
+]
+
+
+@pytest.mark.parametrize(("text", "expected"), OPERATOR_CASES)
+def test_an_operator_names_a_shared_scooter(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
+
+
+#: Where the operator's name is no e-scooter: a ride-hail "Bolt" taken to a place, its driver, a street.
+OPERATOR_NEAR_MISSES = [
+    ("I took a Bolt to the airport; at 50 km/h a cyclist crossed in front of us from the right.", ["bicycle"]),
+    ("I was driving at 30 when the Bolt driver in front braked hard.", ["car"]),
+    ("On Lime Street in the rain, doing 30, a pedestrian stepped out in front of me from the left.", ["pedestrian"]),
+]
+
+
+@pytest.mark.parametrize(("text", "expected"), OPERATOR_NEAR_MISSES)
+def test_an_operator_name_that_is_no_scooter(text: str, expected: list[str]) -> None:
+    assert kinds(text) == expected
