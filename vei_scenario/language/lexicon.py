@@ -35,6 +35,48 @@ TRUCK_MAKES = ("scania", "iveco", "daf", "transit bus")
 #: things"). Most are everyday words ("lime", "bird", "bolt"), so they name an e-scooter only written
 #: with their capital in a road user's place (:func:`who.shared_scooters`).
 SCOOTER_OPERATORS = ("lime", "bird", "tier", "voi", "dott", "bolt", "spin", "beam", "neuron", "superpedestrian")
+#: The words for each kind of road user in the languages whose speakers write English for a report, a
+#: forum or a translated statement and keep the word of their own ("a Lkw changed onto my lane", "a guy
+#: on a patinete", "the piéton"): German, French, Spanish, Portuguese, Italian, Dutch, Polish, Czech,
+#: Turkish, in plain letters (the reader drops accents: :func:`normalise.plain_letters`) and in the
+#: plural where it is no English plural. Words that are also English words ("rower", "step", "roller",
+#: "auto", "kolo", "pullman") are left out: there they name something else ("a rower on the river",
+#: "an auto repair shop").
+LOANWORDS = {
+    "truck": (
+        "lkw", "lkws", "sattelzug", "sattelschlepper", "lastwagen", "lastkraftwagen", "sattelauflieger", "camion",
+        "camions", "camiones", "caminhao", "caminhoes", "poids lourd", "poids-lourd", "poids lourds",
+        "semi-remorque", "tir", "ciezarowka", "kamyon", "vrachtwagen", "vrachtauto", "vrachtwagens",
+        "nakladni auto", "autobus", "onibus", "otobus", "autocar", "autocarro",
+    ),
+    "van": (
+        "kastenwagen", "lieferwagen", "kleintransporter", "camionnette", "camionnettes", "fourgon",
+        "fourgonnette", "utilitaire", "furgoneta", "furgonetas", "furgao", "furgone", "furgoni", "furgon",
+        "furgonetka", "dostawczak", "bestelwagen", "bestelbus", "busje", "dodavka", "kamyonet",
+    ),
+    "e-scooter": (
+        "trottinette", "trottinettes", "trottinette electrique", "patinete", "patinetes", "patinete electrico",
+        "patinete eletrico", "trotinete", "trotinetes", "trotineta", "monopattino", "monopattini",
+        "monopattino elettrico", "hulajnoga", "hulajnogi", "hulajnodze", "kolobezka", "e-roller", "e-tretroller",
+        "tretroller", "elektroroller", "vmp", "edpm", "elektrikli scooter",
+    ),
+    "bicycle": (
+        "fahrrad", "fahrrader", "radfahrer", "radfahrerin", "radler", "velo", "cycliste", "cyclistes",
+        "bicicleta", "bicicletas", "bicicletta", "bici", "ciclista", "ciclistas", "ciclisti", "rowerzysta",
+        "rowerzystka", "fiets", "fietser", "fietsers", "cyklista", "bisiklet", "bisikletli",
+    ),
+    "pedestrian": (
+        "fussganger", "fussgangerin", "pieton", "pietonne", "pietons", "peaton", "peatones", "pedone", "pedoni",
+        "pieszy", "piesza", "pedestre", "peao", "voetganger", "voetgangers", "chodec",
+    ),
+    "car": (
+        "pkw", "pkws", "personenwagen", "voiture", "voitures", "coche", "coches", "carro", "macchina", "samochod",
+        "osobowka", "araba", "osobni auto", "moto", "motos", "motocicleta", "motocyclette", "motorrad",
+        "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer", "scooterino", "mofa",
+        "mobylette", "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard", "motorradfahrer",
+        "motocyklista", "motorrijder",
+    ),
+}  # fmt: skip
 
 #: Animals on the road, played as pedestrians (OpenSCENARIO's pedestrianCategory "animal" has no model of
 #: its own in vei or esmini: its size and way of crossing are a walker's). One led, walked or ridden by a
@@ -151,6 +193,7 @@ ACTOR_NOUNS = {
         "eptc",
         "ept",
         *ANIMALS,
+        *LOANWORDS["pedestrian"],
     ),
     "bicycle": (
         "bicycle",
@@ -177,6 +220,7 @@ ACTOR_NOUNS = {
         "becak",
         "ebta",
         "ebt",  # (Euro NCAP's bicyclist target)
+        *LOANWORDS["bicycle"],
     ),  # fmt: skip
     "e-scooter": (
         "e-scooter",
@@ -202,6 +246,7 @@ ACTOR_NOUNS = {
         "electric skateboard",
         "e-skateboard",
         "solowheel",
+        *LOANWORDS["e-scooter"],
     ),
     "truck": (
         "truck",
@@ -271,6 +316,7 @@ ACTOR_NOUNS = {
         "road roller",
         "steamroller",
         *TRUCK_MAKES,
+        *LOANWORDS["truck"],
     ),
     "van": (
         "van",
@@ -316,6 +362,7 @@ ACTOR_NOUNS = {
         "light commercial vehicle",
         "lcv",
         *VAN_MODELS,
+        *LOANWORDS["van"],
     ),
 }
 CAR_NOUNS = (
@@ -400,6 +447,7 @@ CAR_NOUNS = (
     "red light runner",
     "light runner",
     *CAR_MAKES,
+    *LOANWORDS["car"],
 )
 #: The car nouns of a motor two-wheeler: "bike" named again after one of them is that one, no pedal cycle
 #: ("a motorcyclist ... the bike stopped").
@@ -407,7 +455,10 @@ MOTOR_TWO_WHEELERS = frozenset((
     "motorcycle", "moped", "motor scooter", "motorbike", "motorcyclist", "powered two-wheeler", "two-wheeler",
     "ptw", "motor bike", "dirt bike", "boda-boda", "boda boda", "boda", "okada", "emt", "motorbike taxi",
     "motorcycle taxi", "moto-taxi", "mototaxi", "moto taxi", "bike taxi", "ojek", "habal-habal", "scooty",
-    "superbike", "sportsbike", "sports bike", "trail bike", "pit bike",
+    "superbike", "sportsbike", "sports bike", "trail bike", "pit bike", "moto", "motos", "motocicleta",
+    "motocyclette", "motorrad", "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer",
+    "mofa", "mobylette", "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard",
+    "motorradfahrer", "motocyklista", "motorrijder",
 ))  # fmt: skip
 #: Words of a vehicle's size that no dictionary has ("a 14-seater van"): words, not slips of another word
 #: ("skater" would be a road user of its own).

@@ -14,6 +14,7 @@ reported as not used when the reader cannot place them).
 from __future__ import annotations
 
 import re
+import unicodedata
 
 from vei_scenario.language.lemmas import english, lemmas
 
@@ -597,6 +598,23 @@ def _arrow_break(m: re.Match) -> str:
     numbers = before is not None and after is not None and before.group(1).isdigit() and after.group(1).isdigit()
     sides = before is not None and after is not None and {before.group(1), after.group(1)} <= {"left", "right"}
     return m.group(0) if short or numbers or sides else ", "
+
+
+#: Letters that no accent mark makes: each as the plain letters a keyboard without it writes.
+_PLAIN_LETTERS = str.maketrans({"ß": "ss", "ł": "l", "Ł": "L", "ø": "o", "Ø": "O", "đ": "d", "Đ": "D", "ı": "i",
+                                "æ": "ae", "Æ": "Ae", "œ": "oe", "Œ": "Oe"})  # fmt: skip
+
+
+def plain_letters(text: str) -> str:
+    """``text`` with its accented letters as plain ones ("piéton" as "pieton", "Fußgänger" as
+    "Fussganger", "Hoża" as "Hoza"): a writer of English keeps a word or a name of their own language
+    with its accents, and the reader's words are plain letters; read letter by letter, an accent would
+    split the word in two ("ho", "a"). Only marks on letters go (canonical decomposition), no symbol
+    ("½", "–", "°") changes."""
+    if text.isascii():
+        return text
+    text = text.translate(_PLAIN_LETTERS)
+    return "".join(c for c in unicodedata.normalize("NFD", text) if not unicodedata.combining(c))
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:

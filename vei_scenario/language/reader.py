@@ -83,7 +83,7 @@ from vei_scenario.language.motion import (
     turn_across_side,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
-from vei_scenario.language.normalise import NUMBER_WORDS, normalise
+from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.route import ego_route, instruction_at, turn_taken_at
@@ -1699,6 +1699,7 @@ def read(text: str) -> Reading:
     shot off the kerb", "a figure in black walked out") is read as a road user of a general noun
     (:func:`who.unnamed_subjects`: of the first few, the first that gives its road users a behaviour);
     the noun is listed as not used."""
+    text = plain_letters(text)  # ("piéton", "Fußgänger": the reader's words are plain letters)
     try:
         reading, refused = _read(text), None
     except NotUnderstood as e:

@@ -644,6 +644,14 @@ def wala_riders(tokens: list[str]) -> list[str]:
 _OPERATOR_BEFORE = frozenset(("a", "an", "the", "another", "one", "some", "his", "her", "their", "two", "three"))
 #: What may follow such a name, ending its noun phrase: punctuation or a word that opens what it does.
 _PHRASE_END = frozenset(".,;:!?") | frozenset(("and", "then", "which", "that", "who", "with", "from", "on", "at"))
+#: Prepositions of where a road user is or goes, which end its noun phrase as well ("a girl on a Lime in
+#: the bike lane", "a Voi across the crossing"); not "to" ("took a Bolt to the airport": a ride-hail car).
+_PLACE_AFTER = frozenset(
+    ("in", "into", "onto", "across", "along", "through", "off", "past", "near", "beside", "behind")
+)
+#: The person on a shared e-scooter, named after its operator ("a Lime rider", "a Voi user"); a "Bolt
+#: driver" drives a ride-hail car and stays one.
+_SCOOTER_PERSON = frozenset(("rider", "riders", "user", "users"))
 
 
 #: Words that put a person on what follows them ("a lad on a lime", "two guys doubled up on one bird").
@@ -670,7 +678,8 @@ def _ridden(tokens: list[str], i: int) -> bool:
 def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[str], bool]) -> list[str]:
     """ "a Lime came down the pavement", "some lad on a Tier", "a Voi shot the red": an operator of shared
     e-scooters written with its capital (``proper``: :func:`proper_names`), after an article and ending
-    its noun phrase (a verb, punctuation or a preposition follows), is an e-scooter. Before "scooter" the
+    its noun phrase (a verb, punctuation or a preposition follows), is an e-scooter; so is it before its
+    rider ("a Voi user"). Before "scooter" the
     name only says whose it is, and goes. In lower case only what someone is on or rides is one ("a lad
     on a lime came out"); else ("lime green", "a bird flew") or in a longer name ("Lime Street") it stays
     the word it is."""
@@ -680,7 +689,10 @@ def shared_scooters(tokens: list[str], proper: frozenset[str], verb: Callable[[s
         if w in SCOOTER_OPERATORS and (w in proper or _ridden(tokens, i)) and i and tokens[i - 1] in _OPERATOR_BEFORE:
             if nxt in ("scooter", "scooters", "e-scooter", "e-scooters", "escooter"):
                 continue
-            if (nxt in _PHRASE_END or verb(nxt)) and nxt not in proper:
+            if (nxt in _PHRASE_END or nxt in _PLACE_AFTER or verb(nxt)) and nxt not in proper:
+                out.append("e-scooter")
+                continue
+            if nxt in _SCOOTER_PERSON:  # ("a Lime rider": the e-scooter's rider)
                 out.append("e-scooter")
                 continue
         out.append(w)
