@@ -1,0 +1,120 @@
+"""A vehicle in the lane beside the ego's that comes to be in front of the ego: a cut-in, whatever the verb.
+
+"A taxi in the left lane came in front of me", "a van from the right lane shoved in ahead of us", "the
+lorry in the offside lane got in front of the ego", "a car from lane 3 nipped in ahead of me": people
+say a cut-in by where it starts and where it ends, with whatever verb comes to mind (came, got,
+barged, nipped, shoved, muscled, squeezed), and the reader cannot know every such verb. The path is
+enough: a road user said to be in (or from) a lane on one side of the ego, then a verb, then "in front
+of" or "ahead of" the ego, is a road user that left its lane for the ego's, right in front of it:
+what a cut-in is.
+
+What must not be read so: a verb of being or of going along ("a van in the right lane was ahead of
+me", "stayed ahead of us", "drove ahead of me"), which says where it is, not a move; no verb at all
+("the car in the left lane ahead of me": a noun phrase, a position); anything that opens a new clause
+between the lane and the end of the path ("a taxi in the left lane, and a bus was ahead of me"); a
+verb with "out" or "across" (a pull-out or a crossing, which other readings take); a walker (who
+has no lane); a verb the reader already read as a behaviour of its own (a stop, an overtake, ...).
+Only a plain going on ("came", read as keep_going) or a verb the reader has no behaviour for is read
+anew.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from vei_scenario.language.lemmas import lemmas
+
+#: Verbs (lemmas) of being somewhere or of going along: with "ahead of me" they say a position, no move.
+_BEING_OR_GOING_ALONG = frozenset(
+    ("be", "stay", "remain", "sit", "keep", "stand", "wait", "drive", "travel", "ride", "cruise", "run", "go",
+     "hold", "lead", "queue", "idle", "continue", "proceed", "follow", "have", "seem", "appear", "look")
+)  # fmt: skip
+#: Tokens that end a clause: what follows them is said of something else.
+_CLAUSE_ENDS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as", "where", "so"))
+#: Particles of a move that is no cut-in: out of a side road or a parking place, across the road.
+_NOT_INTO_THE_LANE = frozenset(("out", "across", "over", "through", "past", "by", "round", "around"))
+#: The sides of the ego a lane may be on.
+_SIDES = frozenset(("left", "right"))
+#: The words of the ego after "in front of" or "ahead of".
+_EGO_WORDS = frozenset(("me", "us", "ego"))
+
+
+def _ends_in_front_of_the_ego(mentions: list, j: int) -> bool:
+    """Whether ``mentions[j]`` is a relation of being in front of the ego ("in front of me", "ahead of
+    us", "in front of the ego"): where a path ends."""
+    rel = mentions[j]
+    if rel.slot != "relation" or rel.value != "ahead":
+        return False
+    if set(rel.words.split()) & _EGO_WORDS:
+        return True
+    nxt = mentions[j + 1] if j + 1 < len(mentions) else None
+    return nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start <= rel.end + 2
+
+
+def _plain_verb(m) -> bool:
+    """Whether mention ``m`` is a verb that says no more than a going on ("came", read as keep_going) or
+    one the reader has no behaviour for ("got", "shoved"): the path around it says what the move is."""
+    return m.slot == "unknown_verb" or (m.slot == "behaviour" and m.value[0] == "keep_going")
+
+
+def _a_move_between(tokens: list[str], start: int, end: int) -> bool:
+    """Whether ``tokens[start:end]`` (between the lane said and the end of the path) hold a verb of
+    moving: a verb that is not one of being or going along, and nothing that ends the clause or makes
+    the move a pull-out or a crossing."""
+    words = tokens[start:end]
+    if not words or any(w in _CLAUSE_ENDS or w in _NOT_INTO_THE_LANE for w in words):
+        return False
+    verbs = [lemmas(w).get("VERB", ()) for w in words]
+    if any(set(v) & _BEING_OR_GOING_ALONG for v in verbs):
+        return False
+    return any(v and not lemmas(w).get("AUX") for v, w in zip(verbs, words, strict=True))
+
+
+def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | None:
+    """Where the lane said at ``mentions[k]`` starts a cut-in path: (the index of the mention read as
+    the move, or -1 where no verb was read, and the index of the relation it ends at); None where it
+    does not."""
+    lane = mentions[k]
+    if lane.slot != "lane_side" or lane.value not in _SIDES or k == 0:
+        return None
+    who = mentions[k - 1]
+    if who.slot != "actor" or who.value in ("ego", "pedestrian"):
+        return None
+    j = k + 1
+    verb = -1
+    if j < len(mentions) and _plain_verb(mentions[j]):
+        verb, j = j, j + 1
+    if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, j):
+        return None
+    start = mentions[verb].start if verb >= 0 else lane.end
+    if not _a_move_between(tokens, lane.end if verb < 0 else start, mentions[j].start):
+        return None
+    return verb, j
+
+
+def into_the_lane_in_front(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said in a lane beside the ego's that then comes to be in front of
+    the ego read as cutting in (``tokens``: the reader's tokens, which the mentions index): the verb's
+    mention (a plain going on) becomes the cut-in, or, where the reader read no verb, the relation
+    that ends the path does; either way the relation is read into the move, as "cut in front of me"
+    is."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k in range(len(kept)):
+            found = _cut_in_at(kept, tokens, k)
+            if found is None:
+                continue
+            verb, j = found
+            rel = kept[j]
+            start = kept[verb].start if verb >= 0 else kept[k].end
+            words = " ".join(tokens[start : rel.end])
+            move = replace(
+                rel, slot="behaviour", value=("cut_in", {}), words=words, start=start, prev=tokens[start - 1]
+            )
+            kept[j] = move
+            if verb >= 0:
+                del kept[verb]
+            break
+        out.append((link, kept))
+    return out
