@@ -41,6 +41,9 @@ def test_from_a_lane_beside_to_in_front_is_a_cut_in(text: str, side: str) -> Non
         "I was doing 60 km/h and a van in the right lane stayed ahead of me.",
         "I was doing 60 km/h and a van in the right lane drove ahead of me.",  # going along there
         "I was doing 60 km/h and the van in the right lane, ahead of me, kept going.",
+        "I was doing 60 km/h and the car in the right lane pulled ahead of me.",  # further along its lane
+        "I was doing 60 km/h and the car in the right lane sped ahead of me.",
+        "I was doing 60 km/h and the car in the right lane got ahead of me.",
     ],
 )
 def test_a_position_in_front_is_no_cut_in(text: str) -> None:

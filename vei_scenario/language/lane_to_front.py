@@ -39,11 +39,15 @@ _SIDES = frozenset(("left", "right"))
 _EGO_WORDS = frozenset(("me", "us", "ego"))
 
 
-def _ends_in_front_of_the_ego(mentions: list, j: int) -> bool:
-    """Whether ``mentions[j]`` is a relation of being in front of the ego ("in front of me", "ahead of
-    us", "in front of the ego"): where a path ends."""
+def _ends_in_front_of_the_ego(mentions: list, tokens: list[str], j: int) -> bool:
+    """Whether ``mentions[j]`` is a relation of being in front of the ego ("in front of me", "in ahead
+    of us", "in front of the ego"): where a path ends. "Ahead of" alone with a verb of going says it
+    got further along ("pulled ahead of me", "sped ahead of us": in its own lane); only with "in"
+    ("nipped in ahead of me") does it say a move into the ego's lane."""
     rel = mentions[j]
     if rel.slot != "relation" or rel.value != "ahead":
+        return False
+    if "front" not in rel.words.split() and (rel.start == 0 or tokens[rel.start - 1] != "in"):
         return False
     if set(rel.words.split()) & _EGO_WORDS:
         return True
@@ -84,7 +88,7 @@ def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | N
     verb = -1
     if j < len(mentions) and _plain_verb(mentions[j]):
         verb, j = j, j + 1
-    if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, j):
+    if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, tokens, j):
         return None
     start = mentions[verb].start if verb >= 0 else lane.end
     if not _a_move_between(tokens, lane.end if verb < 0 else start, mentions[j].start):
