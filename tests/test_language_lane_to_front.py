@@ -50,6 +50,22 @@ def test_a_position_in_front_is_no_cut_in(text: str) -> None:
     assert "cut_in" not in {b for moves in _moves(text) for b in moves}
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was doing 60 km/h and the car in the next lane came in front of me.",
+        "Ego at 80 kph; a van from the adjacent lane gets in front of the ego.",
+        "Cruising at 50 mph, a pickup out of the other lane barged in front of us.",
+    ],
+)
+def test_from_the_lane_beside_side_unsaid_is_a_cut_in(text: str) -> None:
+    assert _moves(text) == [["cut_in"]]
+
+
+def test_a_position_in_the_next_lane_is_no_cut_in() -> None:
+    assert _moves("I was doing 60 km/h and a car in the next lane was in front of me.") == [["keep_going"]]
+
+
 def test_a_walker_has_no_lane_to_cut_in_from() -> None:
     moves = _moves("I was doing 30 mph and a man in the left lane walked in front of me.")
     assert "cut_in" not in {b for m in moves for b in m}

@@ -35,6 +35,8 @@ _CLAUSE_ENDS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "w
 _NOT_INTO_THE_LANE = frozenset(("out", "across", "over", "through", "past", "by", "round", "around"))
 #: The sides of the ego a lane may be on.
 _SIDES = frozenset(("left", "right"))
+#: Words that make "lane" one beside the ego's, side unsaid ("the next lane", "the adjacent lane").
+_BESIDE = frozenset(("next", "adjacent", "neighbouring", "neighboring", "other", "parallel", "nearside", "offside"))
 #: The words of the ego after "in front of" or "ahead of".
 _EGO_WORDS = frozenset(("me", "us", "ego"))
 
@@ -74,26 +76,54 @@ def _a_move_between(tokens: list[str], start: int, end: int) -> bool:
     return any(v and not lemmas(w).get("AUX") for v, w in zip(verbs, words, strict=True))
 
 
-def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | None:
-    """Where the lane said at ``mentions[k]`` starts a cut-in path: (the index of the mention read as
-    the move, or -1 where no verb was read, and the index of the relation it ends at); None where it
-    does not."""
-    lane = mentions[k]
-    if lane.slot != "lane_side" or lane.value not in _SIDES or k == 0:
+def _lane_beside_after(tokens: list[str], i: int) -> int | None:
+    """Where a lane beside the ego's with no side said ("in the next lane", "from the adjacent lane",
+    "out of the other lane") ends, when one is said from token ``i``; None where none is."""
+    j = i
+    while j < len(tokens) and j < i + 2 and tokens[j] in ("in", "from", "out", "of"):
+        j += 1
+    if j == i or j + 2 >= len(tokens) or tokens[j] not in ("the", "a"):
         return None
-    who = mentions[k - 1]
-    if who.slot != "actor" or who.value in ("ego", "pedestrian"):
+    if tokens[j + 1] in _BESIDE and tokens[j + 2] in ("lane", "lanes"):
+        return j + 3
+    return None
+
+
+def _lane_end(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | None:
+    """(The index of the mention after the lane and the token the lane ends at) where the road user
+    named at ``mentions[k]`` is said right after in a lane on one side of the ego ("in the left lane")
+    or beside it ("in the next lane"); None where it is not."""
+    nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+    if nxt is not None and nxt.slot == "lane_side" and nxt.value in _SIDES:
+        return k + 2, nxt.end
+    end = _lane_beside_after(tokens, mentions[k].end)
+    if end is None:
         return None
     j = k + 1
+    while j < len(mentions) and mentions[j].start < end:  # ("the other": read as a member, part of the lane)
+        j += 1
+    return j, end
+
+
+def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int, int] | None:
+    """Where the road user named at ``mentions[k]``, in a lane beside the ego's, is said to come in
+    front of the ego: (the index of the mention read as the move, or -1 where no verb was read, the
+    index of the relation it ends at, and the token its lane ends at); None where it is not."""
+    who = mentions[k]
+    if who.slot != "actor" or who.value in ("ego", "pedestrian"):
+        return None
+    lane = _lane_end(mentions, tokens, k)
+    if lane is None:
+        return None
+    j, lane_end = lane
     verb = -1
     if j < len(mentions) and _plain_verb(mentions[j]):
         verb, j = j, j + 1
     if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, tokens, j):
         return None
-    start = mentions[verb].start if verb >= 0 else lane.end
-    if not _a_move_between(tokens, lane.end if verb < 0 else start, mentions[j].start):
+    if not _a_move_between(tokens, lane_end, mentions[j].start):
         return None
-    return verb, j
+    return verb, j, lane_end
 
 
 def into_the_lane_in_front(clauses: list, tokens: list[str]) -> list:
@@ -109,9 +139,9 @@ def into_the_lane_in_front(clauses: list, tokens: list[str]) -> list:
             found = _cut_in_at(kept, tokens, k)
             if found is None:
                 continue
-            verb, j = found
+            verb, j, lane_end = found
             rel = kept[j]
-            start = kept[verb].start if verb >= 0 else kept[k].end
+            start = kept[verb].start if verb >= 0 else lane_end
             words = " ".join(tokens[start : rel.end])
             move = replace(
                 rel, slot="behaviour", value=("cut_in", {}), words=words, start=start, prev=tokens[start - 1]
