@@ -62,6 +62,31 @@ def test_from_the_lane_beside_side_unsaid_is_a_cut_in(text: str) -> None:
     assert _moves(text) == [["cut_in"]]
 
 
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("We were doing 20 mph when a taxi on our right came in front of us.", "right"),
+        ("I was doing 30 mph and a van on my left suddenly lurched right in front of me.", "left"),
+        ("lol doing like 40 and this SUV on my right just squeezed in front of me no signal", "right"),
+    ],
+)
+def test_from_beside_the_ego_to_in_front_is_a_cut_in(text: str, side: str) -> None:
+    r = read(text)
+    assert [[b[0] for b in a.behaviours] for a in r.actors] == [["cut_in"]]
+    assert r.actors[0].relation == side
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Driving at 50 km/h, a car from the right came in front of me at the junction.",  # comes from there
+        "I was doing 30 mph and a car on my right was in front of me.",
+    ],
+)
+def test_from_a_side_or_a_position_is_no_cut_in(text: str) -> None:
+    assert "cut_in" not in {b for moves in _moves(text) for b in moves}
+
+
 def test_a_position_in_the_next_lane_is_no_cut_in() -> None:
     assert _moves("I was doing 60 km/h and a car in the next lane was in front of me.") == [["keep_going"]]
 

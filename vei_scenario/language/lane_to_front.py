@@ -6,7 +6,8 @@ say a cut-in by where it starts and where it ends, with whatever verb comes to m
 barged, nipped, shoved, muscled, squeezed), and the reader cannot know every such verb. The path is
 enough: a road user said to be in (or from) a lane on one side of the ego, then a verb, then "in front
 of" or "ahead of" the ego, is a road user that left its lane for the ego's, right in front of it:
-what a cut-in is.
+what a cut-in is. So is one said on a side of the ego ("a taxi on our right came in front of us"): beside
+it, going its way, in the lane on that side.
 
 What must not be read so: a verb of being or of going along ("a van in the right lane was ahead of
 me", "stayed ahead of us", "drove ahead of me"), which says where it is, not a move; no verb at all
@@ -37,6 +38,8 @@ _NOT_INTO_THE_LANE = frozenset(("out", "across", "over", "through", "past", "by"
 _SIDES = frozenset(("left", "right"))
 #: Words that make "lane" one beside the ego's, side unsaid ("the next lane", "the adjacent lane").
 _BESIDE = frozenset(("next", "adjacent", "neighbouring", "neighboring", "other", "parallel", "nearside", "offside"))
+#: Words that make a side the ego's ("on my right", "on our left", "on the ego's left").
+_EGO_OWNERS = frozenset(("my", "our", "ego", "ego's"))
 #: The words of the ego after "in front of" or "ahead of".
 _EGO_WORDS = frozenset(("me", "us", "ego"))
 
@@ -89,12 +92,27 @@ def _lane_beside_after(tokens: list[str], i: int) -> int | None:
     return None
 
 
+def _beside_the_ego(m) -> bool:
+    """Whether mention ``m`` is a side said as the ego's ("on my right", "on our left"): a road user
+    there is beside the ego, going its way; "from the right" (where it comes from) is not."""
+    words = m.words.split()
+    return m.slot == "side" and words[:1] == ["on"] and bool(set(words) & _EGO_OWNERS)
+
+
+def _skip_manner(mentions: list, j: int) -> int:
+    """The index of the first mention from ``j`` on that is not a manner ("suddenly", "right in front"):
+    how a move is made stands anywhere along its path."""
+    while j < len(mentions) and mentions[j].slot == "criticality":
+        j += 1
+    return j
+
+
 def _lane_end(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | None:
     """(The index of the mention after the lane and the token the lane ends at) where the road user
     named at ``mentions[k]`` is said right after in a lane on one side of the ego ("in the left lane")
     or beside it ("in the next lane"); None where it is not."""
     nxt = mentions[k + 1] if k + 1 < len(mentions) else None
-    if nxt is not None and nxt.slot == "lane_side" and nxt.value in _SIDES:
+    if nxt is not None and (nxt.slot == "lane_side" or _beside_the_ego(nxt)) and nxt.value in _SIDES:
         return k + 2, nxt.end
     end = _lane_beside_after(tokens, mentions[k].end)
     if end is None:
@@ -117,8 +135,9 @@ def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int, int
         return None
     j, lane_end = lane
     verb = -1
+    j = _skip_manner(mentions, j)
     if j < len(mentions) and _plain_verb(mentions[j]):
-        verb, j = j, j + 1
+        verb, j = j, _skip_manner(mentions, j + 1)
     if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, tokens, j):
         return None
     if not _a_move_between(tokens, lane_end, mentions[j].start):
@@ -146,9 +165,11 @@ def into_the_lane_in_front(clauses: list, tokens: list[str]) -> list:
             move = replace(
                 rel, slot="behaviour", value=("cut_in", {}), words=words, start=start, prev=tokens[start - 1]
             )
-            kept[j] = move
-            if verb >= 0:
-                del kept[verb]
+            if verb >= 0:  # (the move where its verb is, the relation read into it)
+                kept[verb] = move
+                del kept[j]
+            else:
+                kept[j] = move
             break
         out.append((link, kept))
     return out
