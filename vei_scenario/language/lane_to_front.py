@@ -4,10 +4,11 @@
 lorry in the offside lane got in front of the ego", "a car from lane 3 nipped in ahead of me": people
 say a cut-in by where it starts and where it ends, with whatever verb comes to mind (came, got,
 barged, nipped, shoved, muscled, squeezed), and the reader cannot know every such verb. The path is
-enough: a road user said to be in (or from) a lane on one side of the ego, then a verb, then "in front
-of" or "ahead of" the ego, is a road user that left its lane for the ego's, right in front of it:
-what a cut-in is. So is one said on a side of the ego ("a taxi on our right came in front of us"): beside
-it, going its way, in the lane on that side.
+enough: a road user said to be in (or from) a lane on one side of the ego or beside it ("the next
+lane"), then a verb, then "in front of" the ego (or "in ahead of" it: "ahead of" alone with a verb of
+going, "pulled ahead of me", says it got further along its own lane), is a road user that left its
+lane for the ego's, right in front of it: what a cut-in is. So is one said on a side of the ego ("a
+taxi on our right came in front of us"): beside it, going its way, in the lane on that side.
 
 What must not be read so: a verb of being or of going along ("a van in the right lane was ahead of
 me", "stayed ahead of us", "drove ahead of me"), which says where it is, not a move; no verb at all
