@@ -71,6 +71,9 @@ def test_accents_are_read_as_plain_letters() -> None:
     assert plain_letters("piéton Fußgänger Hoża ciężarówka Øresund") == "pieton Fussganger Hoza ciezarowka Oresund"
     assert plain_letters("½ mile – 30 °C, “quoted” → ok") == "½ mile – 30 °C, “quoted” → ok"  # (symbols stay)
     assert plain_letters("plain ascii") == "plain ascii"
+    # (letters of other scripts that decompose into parts of their own stay whole: the words not used
+    # are shown as written)
+    assert plain_letters("자전거 가 が ガ") == "자전거 가 が ガ"
 
 
 #: A name with an accent is one word, not two: "Hoża" read letter by letter was "ho" and "a", an article.

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from functools import lru_cache
 
 from vei_scenario.language.lemmas import english, lemmas
 
@@ -613,8 +614,17 @@ def plain_letters(text: str) -> str:
     ("½", "–", "°") changes."""
     if text.isascii():
         return text
-    text = text.translate(_PLAIN_LETTERS)
-    return "".join(c for c in unicodedata.normalize("NFD", text) if not unicodedata.combining(c))
+    return "".join(_plain_letter(c) for c in text.translate(_PLAIN_LETTERS))
+
+
+@lru_cache(maxsize=4096)
+def _plain_letter(c: str) -> str:
+    """``c`` without its marks where that leaves a plain letter ("é" as "e"); any other character as it
+    is, so that scripts whose letters decompose into parts of their own (Hangul, kana) stay whole."""
+    if c.isascii():
+        return c
+    base = "".join(x for x in unicodedata.normalize("NFD", c) if not unicodedata.combining(x))
+    return base if base and base.isascii() else c
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
