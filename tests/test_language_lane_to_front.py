@@ -44,6 +44,8 @@ def test_from_a_lane_beside_to_in_front_is_a_cut_in(text: str, side: str) -> Non
         "I was doing 60 km/h and the car in the right lane pulled ahead of me.",  # further along its lane
         "I was doing 60 km/h and the car in the right lane sped ahead of me.",
         "I was doing 60 km/h and the car in the right lane got ahead of me.",
+        "Doing 60 km/h with a lorry in the left lane right in front of us, crawling.",  # how close, no move
+        "We had a van in the next lane just in front of us the whole way at 50 km/h.",
     ],
 )
 def test_a_position_in_front_is_no_cut_in(text: str) -> None:

@@ -69,15 +69,16 @@ def _plain_verb(m) -> bool:
 
 def _a_move_between(tokens: list[str], start: int, end: int) -> bool:
     """Whether ``tokens[start:end]`` (between the lane said and the end of the path) hold a verb of
-    moving: a verb that is not one of being or going along, and nothing that ends the clause or makes
-    the move a pull-out or a crossing."""
+    moving: a verb that is not one of being or going along, nor a word that may be an adverb ("right
+    in front of us": how close, no move), and nothing that ends the clause or makes the move a pull-out
+    or a crossing."""
     words = tokens[start:end]
     if not words or any(w in _CLAUSE_ENDS or w in _NOT_INTO_THE_LANE for w in words):
         return False
     verbs = [lemmas(w).get("VERB", ()) for w in words]
     if any(set(v) & _BEING_OR_GOING_ALONG for v in verbs):
         return False
-    return any(v and not lemmas(w).get("AUX") for v, w in zip(verbs, words, strict=True))
+    return any(v and not lemmas(w).get("AUX") and not lemmas(w).get("ADV") for v, w in zip(verbs, words, strict=True))
 
 
 def _lane_beside_after(tokens: list[str], i: int) -> int | None:
