@@ -67,6 +67,8 @@ FIRST = {
     "language_independent_z14.json": ((50, 50, 22, 48), "sealed for a round of reader work"),
     "language_independent_z15.json": ((50, 50, 7, 46), "sealed for two rounds of reader work"),
     "language_independent_z16.json": ((50, 50, 11, 48), "sealed for two rounds of reader work"),
+    "language_independent_z17.json": ((50, 50, 6, 47), "sealed for two rounds of reader work"),
+    "language_independent_z18.json": ((50, 50, 10, 46), "sealed for two rounds of reader work"),
 }
 
 
