@@ -88,5 +88,6 @@ def test_placed_in_road() -> None:
 
 
 def test_speeding_up_is_no_reaction() -> None:
-    free = crossing_reaction.said_free("change_speed", {"speed_delta_mps": 3.0}, ["he"], [",", "we"], lambda w: False)
+    tokens = ["he", "accelerated", ",", "we"]
+    free = crossing_reaction.said_free("change_speed", {"speed_delta_mps": 3.0}, tokens, 1, 2, lambda w: False)
     assert not free

@@ -23,6 +23,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from vei_scenario.language.clauses import sentence_start
+from vei_scenario.language.ego import SENTENCE_END
+
 #: Moves that bring a road user across the ego's path rather than along its lane.
 CROSSING = frozenset(("cross_in_front", "turn_into", "turn_across", "run_red_light", "wrong_way"))
 #: Behaviours of slowing or stopping.
@@ -36,8 +39,6 @@ _IN_THE_ROAD = frozenset(
 )  # fmt: skip
 #: Prepositions of where something stands ("in", "at", "on", "across").
 _AT = frozenset(("in", "at", "on", "across", "inside"))
-#: Tokens that end a sentence.
-_SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
 #: How many words after the verb may say where it stops ("stops dead in the middle of our lane").
 _WINDOW = 4
 
@@ -54,22 +55,23 @@ def placed_in_road(after: list[str]) -> bool:
 MARK = "_said_free"
 
 
-def said_free(name: str, cfg: dict, before: list[str], after: list[str], own_noun: Callable[[str], bool]) -> bool:
-    """Whether slowing behaviour ``name`` (its parameters ``cfg``) is said free of the road user it was
-    given to: not placed in the road (``after``: the words from its verb's last word on), not joined
-    to a move before by "then" in its sentence and not said with the road user's own noun right
-    before it (``before``: the words before its verb; ``own_noun``: whether a word names that road
-    user). Speeding up ("he accelerated") is no reaction."""
+def said_free(name: str, cfg: dict, tokens: list[str], start: int, end: int, own_noun: Callable[[str], bool]) -> bool:
+    """Whether slowing behaviour ``name`` (its parameters ``cfg``), said in ``tokens[start:end]``, is
+    said free of the road user it was given to: not placed in the road (the words from its verb's last
+    word on), not joined to a move before by "then" in its sentence and not said with the road user's
+    own noun right before it (``own_noun``: whether a word names that road user). Speeding up ("he
+    accelerated") is no reaction."""
     if name not in _SLOWING:
         return False
     if name == "change_speed" and float(cfg.get("speed_delta_mps", -1.0)) > 0:
         return False
-    if placed_in_road(after) or "then" in _this_sentence(before):
+    sentence = tokens[sentence_start(tokens, start, SENTENCE_END) : start]
+    if placed_in_road(tokens[max(0, end - 1) :][:_WINDOW]) or "then" in sentence:
         return False
-    subject, sentence = _subject(before), _this_sentence(before)
+    subject = _subject(sentence)
     if subject == "it" and any(own_noun(w) for w in sentence):
         return False  # ("we had a van pull out ... and it had to stop": the van its sentence is about)
-    return not any(own_noun(w) for w in before[-2:]) and not own_noun(subject)
+    return not any(own_noun(w) for w in tokens[max(0, start - 2) : start]) and not own_noun(subject)
 
 
 #: Words between a subject and its verb ("it had to stop", "the van was forced to brake").
@@ -97,9 +99,3 @@ def drop_egos_reactions(behaviours: list) -> list:
             continue  # ("pulled out right in front of her. She braked": hers)
         out.append((name, cfg, crit, link))
     return out
-
-
-def _this_sentence(before: list[str]) -> list[str]:
-    """The words of ``before`` after its last full stop: those of the sentence the verb is in."""
-    ends = [k for k, w in enumerate(before) if w in _SENTENCE_ENDS]
-    return before[ends[-1] + 1 :] if ends else before

@@ -39,7 +39,7 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
-from vei_scenario.language.discourse import PERCEIVE
+from vei_scenario.language.discourse import FIRST_PERSON, PERCEIVE
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
@@ -65,8 +65,6 @@ _IN_THE_PATH = frozenset(
 NEW = frozenset(("a", "an", "another", "some", "one"))
 #: Words that name the ego in the reader's tokens: the narrator, the reader addressed, the ego framed.
 _NAMING_THE_EGO = frozenset(("i", "we", "me", "us", "my", "our", "you", "your", "yourself", "ego"))
-#: The writer's own words among them: they name the ego only where the writer is in the scene.
-_WRITER = frozenset(("i", "we", "me", "us", "my", "our"))
 #: The kinds the ego may be (it drives or rides: never on foot).
 _EGO_KINDS = frozenset(("car", "van", "truck", "bicycle", "e-scooter"))
 #: The nouns for whoever is at a wheel, said of a person and no vehicle (a closed class).
@@ -108,8 +106,8 @@ def ego_unnamed(tokens: list[str], clauses: list, writer_outside: bool = False) 
     first-person writer is in no vehicle of their own (:mod:`vei_scenario.language.narrator_outside`:
     "we the undersigned", "my grandson was hit by"): their "I" and "we" name no one in the scene, and
     the story is told as a report with no narrator is ("you" and an ego phrase still name the ego)."""
-    naming = _NAMING_THE_EGO - _WRITER if writer_outside else _NAMING_THE_EGO
-    return not ego_phrase(clauses, _WRITER if writer_outside else frozenset()) and not (naming & set(tokens))
+    writer = FIRST_PERSON if writer_outside else frozenset()  # (the writer's own words: only theirs)
+    return not ego_phrase(clauses, writer) and not ((_NAMING_THE_EGO - writer) & set(tokens))
 
 
 #: "you" in the text as written (the reader's own tokens may read it as the narrator's "I").

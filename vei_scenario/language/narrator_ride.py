@@ -19,6 +19,7 @@ with its reason:
 
 from __future__ import annotations
 
+from vei_scenario.language import discourse
 from vei_scenario.language.ego import BETWEEN, FIRST_PERSON, HABIT, SENTENCE_END, KindAt, lemma_in, rider_noun
 from vei_scenario.language.ego_double import take_as_ego, without_road_user
 from vei_scenario.language.lemmas import lemmas
@@ -165,7 +166,7 @@ def drop_narrators_ride(actors: list, reading: Reading, tokens: list[str], kind_
     its speed the ego's where none was read. ``actors`` are what the reader gathered of its road users,
     in the same order, ``tokens`` the words they were read from, ``kind_at`` what kind a phrase names.
     Returns ``actors`` without it."""
-    if not (FIRST_PERSON | {"me", "my", "us", "our"}) & set(tokens) or len(reading.actors) < 2:
+    if not discourse.FIRST_PERSON & set(tokens) or len(reading.actors) < 2:
         return actors
     for k, (a, spec) in enumerate(zip(actors, reading.actors)):
         if spec.kind not in RIDDEN or not _free(a, spec):

@@ -24,6 +24,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.lemmas import lemmas
 
 #: Heads that make a number no speed of travel nor a starting gap: a measure across the road ("a lateral
@@ -517,10 +518,7 @@ def miles_limit_speed(tokens: list[str], i: int) -> bool:
     value = float(tokens[i])
     if not tokens[i].isdigit() or int(value) not in _MILES_ONLY_SPEEDS or tokens[i + 1 : i + 2] == ["speed"]:
         return False
-    start = i
-    while start > 0 and tokens[start - 1] not in _STOPS:
-        start -= 1
-    return not any(t in _RIDING for t in tokens[start:i])
+    return not any(t in _RIDING for t in tokens[sentence_start(tokens, i, _STOPS) : i])
 
 
 #: Words of slow traffic ("heavy traffic", "jammed", "rush hour", "roadworks"): at them a motorway's

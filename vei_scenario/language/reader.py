@@ -2375,9 +2375,8 @@ def _read(text: str) -> Reading:
             end, start = cfg.pop("_end", len(scanned)), cfg.pop("_start", None)
             a.across = a.across or kerb_ride.said_across(name, words, scanned[end:][:2])
             if start is not None and crossing_reaction.said_free(
-                name, cfg, scanned[:start], scanned[max(0, end - 1) :],
-                lambda w, kind=a.kind: _single_kind(w) == kind,
-            ):  # fmt: skip
+                name, cfg, scanned, start, end, lambda w, kind=a.kind: _single_kind(w) == kind
+            ):
                 cfg[crossing_reaction.MARK] = 1.0  # (dropped after a crossing, once its name is final)
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
