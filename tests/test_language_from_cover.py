@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 
+from tests.reading_of import ego_kph
 from vei_scenario.language import from_cover
 from vei_scenario.language.reader import FUNCTION_WORDS, read
 
@@ -119,3 +120,83 @@ def test_ones_own_people_crossing_are_walkers(text: str) -> None:
 )
 def test_ones_own_people_who_do_not_cross_are_no_walkers(text: str, kinds: list[str]) -> None:
     assert [k for k, _, _ in _acts(text)] == kinds
+
+
+def _cover(text: str) -> list[tuple[str, list[str], str | None, float | None]]:
+    """The vehicles read from ``text`` that stand at the kerb or are read as parked cover: kind,
+    behaviours' names, start and speed."""
+    return [
+        (a.kind, [b[0] for b in a.behaviours], a.relation, a.speed_mps)
+        for a in read(text).actors
+        if a.kind in ("car", "van", "truck")
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # (the ego named by the cover's kind, its braking and speed read as the cover's)
+        "A toddler ran from between two parked cars into the road ahead of us, we were going 30 km/h and "
+        "the taxi stopped just in time.",
+        "A woman walked out from behind a parked car in front of the Uber, the car was doing 25 mph and "
+        "it stopped in time.",
+        "Pedestrian emerged from between stationary lorries ahead of the HGV; the lorry, at 40 km/h, braked hard.",
+        "Kid darted out from behind a parked van right in front of our van, we were doing 30 and the van "
+        "stopped just in time.",
+        "Small boy run out from behind parked bus, our bus going 30 km/h, bus brake hard and stop.",
+        "A schoolboy stepped out from behind a parked lorry in front of the coach; the coach was doing 30 mph "
+        "and it braked hard.",
+        "A child ran out between parked cars in front of the minicab, the cab was going 20 mph and it "
+        "stopped just short.",
+    ],
+)
+def test_cover_stands(text: str) -> None:
+    """A parked or standing vehicle someone comes out from behind or between stands at the kerb,
+    whatever else was said near it: scenery, not a road user that brakes or moves."""
+    cover = _cover(text)
+    assert cover
+    assert all(
+        names == ["stop"] and speed == 0.0 and (rel or "").startswith("roadside") for _, names, rel, speed in cover
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "kph"),
+    [
+        ("A woman walked out from behind a parked car in front of the Uber, the car was doing 25 mph and "
+         "it stopped in time.", 40.2),
+        ("Pedestrian emerged from between stationary lorries ahead of the HGV; the lorry, at 40 km/h, "
+         "braked hard.", 40.0),
+        ("A schoolboy stepped out from behind a parked lorry in front of the coach; the coach was doing "
+         "30 mph and it braked hard.", 48.3),
+    ],
+)  # fmt: skip
+def test_speed_hung_on_the_cover_with_a_braking_is_the_egos(text: str, kph: float) -> None:
+    """The speed said with the braking that the reader hung on the cover is the ego's."""
+    assert ego_kph(text) == kph
+
+
+@pytest.mark.parametrize(
+    ("text", "want"),
+    [
+        ("A parked car pulled out in front of me without indicating.", ["cut_in"]),  # (no one's cover)
+        ("A kid ran out from behind a bus that was pulling away from the stop.", ["cut_in"]),  # (not said to stand)
+        (
+            "A car pulled out from behind a parked van and cut in front of me.",
+            ["cut_in", "stop"],
+        ),  # (a vehicle's cover)
+        ("A cyclist came from behind a parked bus and overtook me.", ["stop"]),
+    ],
+)
+def test_what_is_no_standing_cover_keeps_its_moves(text: str, want: list[str]) -> None:
+    """A parked vehicle that is no one's cover, and cover not said to stand, keep what they do."""
+    assert [names[0] for _, names, _, _ in _cover(text)] == want
+
+
+def test_cover_alone_is_left_alone() -> None:
+    """Where the reader found no one but the cover ("Lad" is no word it knows), what it hung on the
+    cover is all it read of the story, and it is kept."""
+    assert [names for _, names, _, _ in _cover("Lad ran out from between two parked vans into my path.")] == [
+        ["cut_in"],
+        ["cut_in"],
+    ]

@@ -12,9 +12,24 @@ an overtaker starts), being behind or between something with no coming out ("a c
 two lorries", "a man stood behind a van": "from" or "out" must govern the preposition), a vehicle
 ("a car pulled out from behind the bus" joins the traffic, which other passes read), and anyone whose
 move the text does say (overtakes, stops, goes along the kerb, waits): only a bare going on is mended.
+
+The cover itself stands. A vehicle said to be parked or standing that someone comes out from behind or
+between ("from between two parked cars", "out from behind a stationary lorry") is told for who comes
+out of it: it is scenery at the kerb, and whatever else the reader hung on it was said of someone
+else (the ego named by the cover's kind: "the taxi stopped just in time"; a remark about the road).
+It stands there, at speed 0; a speed hung on it with a braking ("the coach was doing 30 mph and it
+braked hard") was the ego's, and is the ego's where the ego has none. A parked vehicle that is no
+one's cover keeps its own moves ("a parked car pulled out"), and so does cover the text does not call
+parked or standing ("from behind a bus that was pulling away"); where the reader found no one but the
+cover, what it hung on the cover is all it read of the story, and it is left alone.
 """
 
 from __future__ import annotations
+
+from typing import Protocol
+
+from vei_scenario.language.discourse import VEHICLES
+from vei_scenario.language.reading import Reading, stands_there
 
 #: Prepositions of cover: what someone is behind, between or among hides them from the ego.
 _COVER = frozenset(("behind", "between", "among", "amongst"))
@@ -76,3 +91,43 @@ def crosses_from_cover(kind: str, behaviours: list, quiet: bool) -> bool:
     if kind not in _WALKERS_AND_RIDERS or not quiet:
         return False
     return all(b[0] in _BARE_GOING for b in behaviours)
+
+
+class _Cover(Protocol):
+    """What the reader gathered of a road user, as far as :func:`cover_stands` reads it."""
+
+    kind: str
+    hides: bool
+    parked: bool
+    stationary: bool
+
+
+#: What a vehicle does when it brakes: hung on standing cover, it is the ego's stop for the one who comes out.
+_BRAKING = frozenset(("stop", "sudden_stop", "change_speed"))
+
+
+def _standing_cover(a: _Cover) -> bool:
+    """Whether road user ``a`` is a vehicle said to be parked or standing that someone comes out from
+    behind or between: cover, which stands at the kerb the whole time."""
+    return a.kind in VEHICLES and a.hides and (a.parked or a.stationary)
+
+
+def cover_stands(actors: list, reading: Reading) -> None:
+    """Make every road user of ``reading`` that is standing cover (gathered as ``actors``, in the same
+    order; see the module) stand: it stops, at speed 0, parked at the kerb (its start is cleared for
+    the parked ones' side). Only where someone else than cover is read: the one it hides. A speed hung
+    on it with a braking is the ego's, where the ego has none: it is what the ego does for the one
+    who comes out ("the taxi was doing 30 and stopped just in time", the taxi read as the cover)."""
+    if all(_standing_cover(a) for a in actors):
+        return  # (no one but the cover: what it carries is all that was read)
+    for a, spec in zip(actors, reading.actors):
+        if not _standing_cover(a) or stands_there(spec):
+            continue
+        brakes = any(b[0] in _BRAKING for b in spec.behaviours)
+        if brakes and reading.ego_speed_mps is None and spec.speed_mps:
+            reading.ego_speed_mps = spec.speed_mps
+        spec.behaviours = [("stop", {}, None, "sequence")]
+        spec.speed_mps = 0.0
+        a.stationary = a.parked = True  # (at the kerb, where it hides someone)
+        if not (spec.relation or "").startswith("roadside"):
+            spec.relation = None  # (the parked ones' side puts it at the kerb)

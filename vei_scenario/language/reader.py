@@ -2064,7 +2064,11 @@ def _read(text: str) -> Reading:
                 if (
                     isinstance(who, _Actor)
                     and who is not clause_subject
-                    and (_comes_out_from(prev, m) or scenery.among_them(scanned, m.start))
+                    and (
+                        _comes_out_from(prev, m)
+                        or scenery.among_them(scanned, m.start)
+                        or from_cover.out_of_cover(scanned, m.start, FUNCTION_WORDS)  # ("from behind a parked lorry")
+                    )
                 ):
                     for hider in who.group or [who]:  # ("from between two vans": both of them)
                         hider.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
@@ -2705,6 +2709,7 @@ def _read(text: str) -> Reading:
     ego_named = ego_double.names_the_ego(text)  # ("... ahead of the ego": no other vehicle is taken for it)
     if not ego_named:  # (before a braking driver is taken for one to swerve round)
         actors = ego_double.merge_ego_driver(actors, r)  # ("Driver braked hard and our cases slid everywhere")
+    from_cover.cover_stands(actors, r)  # ("ran out between parked cars ... the taxi stopped in time")
     _parked(actors, r.actors)
     _cut_outs(
         r.actors,
