@@ -753,3 +753,35 @@ def test_the_cruise_setting_or_a_number_sat_on_is_the_egos_speed(text, kph):
 )
 def test_a_cruise_setting_of_another_or_a_time_is_not_the_egos_speed(text):
     assert _ego(text) not in (pytest.approx(90 / 3.6), pytest.approx(20 / 3.6))
+
+
+# --- a bare speed after a verb of going and the manner of going ("going slowly 20", "going straight with 40") ----
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Late last night on a one-way street I was going slowly 20. A courier came the wrong way in my lane.", 20),
+        ("We were driving carefully 30, then a boy ran out from behind the bus.", 30),
+        ("I was travelling steadily 50 on the ring road and a lorry pulled out of a side road.", 50),
+        ("my light was green, i was going straight with 40, a scooter ran the red from the left and i hit him", 40),
+        ("I was going very slowly 15, a cyclist came off the pavement right in front of me.", 15),
+        ("I was driving with about 60 when a van pulled out of a side road on my left.", 60),
+        ("Was driving normally 40 when a kid on a bike came out of a driveway.", 40),
+    ],
+    ids=["slowly", "carefully", "steadily", "straight-with", "very-slowly", "with-about", "subjectless"],
+)
+def test_a_bare_speed_after_a_verb_of_going_and_its_manner_is_the_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was going slowly 2 cars behind the bus when a boy ran out in front of me.",
+        "We were driving with 3 kids in the back when a van pulled out of a side road.",
+        "I was going with 2 friends to the match when a cyclist came off the pavement.",
+        "I was driving carefully. 20 minutes later a van pulled out of a side road.",
+    ],
+    ids=["cars-behind", "kids-in-the-back", "friends", "minutes-later"],
+)
+def test_a_number_after_a_verb_of_going_that_counts_or_times_is_no_speed(text):
+    assert _ego(text) is None

@@ -328,6 +328,18 @@ _FOOT_M, _YARD_M = 0.3048, 0.9144
 _LENGTHS = re.compile(r"(\d+(?:\.\d+)?)\s*(feet|foot|ft|yards?|yds?)\b(?! (?:per|a) second)")
 #: "1930 hrs", "0750h": a four-digit clock; "6pm", "3 in the afternoon", "9 at night": the hour said.
 _FOUR_DIGIT_CLOCK = re.compile(r"\b([01]\d|2[0-3])([0-5]\d)\s*(?:hrs|hours|h)\b")
+#: "18h30", "7h15", and "8h" after a word of when ("around 8h", "at 22h"): the clock as much of Europe writes
+#: it; a bare "3h" after anything else ("a 3h drive", "for 2h") is a duration.
+_CLOCK_WITH_H = re.compile(
+    r"\b([01]?\d|2[0-3])h([0-5]\d)\b|\b((?:at|around|about|approx|approximately|towards|toward|by|circa) )"
+    r"([01]?\d|2[0-3])h\b"
+)
+
+
+def _clock_with_h(m: re.Match) -> str:
+    return f"{m.group(1)}:{m.group(2)}" if m.group(1) else f"{m.group(3)}{m.group(4)}:00"
+
+
 _HOUR_OF = re.compile(r"\b(1[0-2]|0?[1-9])(?: o'?clock)? (in the (?:morning|afternoon|evening)|at night)\b")
 _HALF = {"in the morning": "am", "in the afternoon": "pm", "in the evening": "pm", "at night": "pm"}
 
@@ -675,6 +687,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
+    text = _CLOCK_WITH_H.sub(_clock_with_h, text)  # ("around 8h", "18h30")
     # "..., PM." / "Snowing, AM": the half of the day said alone
     text = re.sub(r"(^|[,.;:]\s*)am(?=\s*(?:[,.;!]|$))", r"\1morning", text)
     text = re.sub(r"(^|[,.;:]\s*)pm(?=\s*(?:[,.;!]|$))", r"\1afternoon", text)
