@@ -785,3 +785,33 @@ def test_a_bare_speed_after_a_verb_of_going_and_its_manner_is_the_speed(text, kp
 )
 def test_a_number_after_a_verb_of_going_that_counts_or_times_is_no_speed(text):
     assert _ego(text) is None
+
+
+# --- how far over the limit a speed was ("8 mph over the limit", "over the limit by 15 mph"): no one's speed -----
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 38 mph, 8 mph over the limit, when a cyclist pulled out in front of me.", 38 * MPH * 3.6),
+        ("The camera had me 12 km/h above the limit, and I was at 62 km/h when a kid ran out in front of me.", 62),
+        ("Speed at trigger 61 km/h, 11 km/h over the posted limit. A scooter came out between parked cars.", 61),
+        ("A kid ran out in front of me. I was 10 mph over the speed limit, I admit.", None),
+        ("I was over the limit by 15 mph when a cyclist swerved into my lane.", None),
+        ("Telematics: a scooter came out between parked cars on the left, speed 8 mph over limit at trigger.", None),
+    ],
+    ids=["aside", "above", "over-posted", "over-speed-limit", "over-by", "note"],
+)
+def test_how_far_over_the_limit_a_speed_was_is_no_speed(text, kph):
+    got = _ego(text)
+    assert (got is None) if kph is None else got == pytest.approx(kph * KPH, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 38 mph over the bridge when a cyclist pulled out in front of me.", 38 * MPH * 3.6),
+        ("I was at 60 km/h above the harbour when a van pulled out of a side road.", 60),
+    ],
+    ids=["over-the-bridge", "above-the-harbour"],
+)
+def test_a_speed_over_a_place_is_still_the_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)

@@ -399,6 +399,28 @@ def crash_change_of_speed(tokens: list[str], i: int) -> bool:
     return False
 
 
+#: Words between "over" and the limit it is over ("over the posted limit", "above the 30 mph speed limit").
+_BEFORE_LIMIT = frozenset({"the", "a", "posted", "speed", "legal", "signed", "its", "that", "mph", "km/h", "kph"})
+_OVER = frozenset({"over", "above"})
+
+
+def over_the_limit(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` says how far over a limit a speed was ("8 mph over the limit", "12 km/h
+    above the posted limit", "over the limit by 15 mph"): a difference of two speeds, no one's speed. Why: a
+    speeding report gives both, and the excess is the smaller number, said where a speed is said. Only with
+    "limit" after it: "38 mph over the bridge" is a speed over a place."""
+    j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
+    if j < len(tokens) and tokens[j] in _OVER:
+        k = j + 1
+        while k < len(tokens) and k <= j + 4 and (tokens[k] in _BEFORE_LIMIT or is_number(tokens[k])):
+            k += 1
+        if k < len(tokens) and tokens[k] == "limit":
+            return True
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""  # ("by 15 mph", "by 15."; not "by 30 m": a distance)
+    by = i >= 2 and tokens[i - 1] == "by" and (nxt in V.SPEED_UNITS or nxt in _NOTE_ENDS)
+    return by and "limit" in tokens[max(i - 5, 0) : i - 1]
+
+
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with
 #: 60 speed on the flyover"): the number is then a speed, not a thing of speeds ("a 40 speed limit", "a 5
 #: speed gearbox", "3 speed bumps").

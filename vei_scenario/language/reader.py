@@ -671,6 +671,8 @@ def _number(
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if Q.crash_change_of_speed(tokens, i):  # ("delta-v V1 = 38 km/h": how hard it hit, no one's speed)
         return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
+    if Q.over_the_limit(tokens, i):  # ("8 mph over the limit": how far over, no one's speed)
+        return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
