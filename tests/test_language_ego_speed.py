@@ -815,3 +815,42 @@ def test_how_far_over_the_limit_a_speed_was_is_no_speed(text, kph):
 )
 def test_a_speed_over_a_place_is_still_the_speed(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+# --- every way a speed's unit is written: per-hour slashes, SI exponents, other languages' hour ---------------
+@pytest.mark.parametrize(
+    "unit, kph",
+    [
+        ("mp/h", 20 * MPH * 3.6),
+        ("m/ph", 20 * MPH * 3.6),
+        ("mi/hr", 20 * MPH * 3.6),
+        ("mi per hr", 20 * MPH * 3.6),
+        ("miles/hr", 20 * MPH * 3.6),
+        ("km p/h", 20),
+        ("km/ph", 20),
+        ("km h-1", 20),
+        ("km h^-1", 20),
+        ("km·h⁻¹", 20),
+        ("km.h-1", 20),
+        ("km hr-1", 20),
+        ("km/u", 20),
+        ("km/t", 20),
+        ("km/jam", 20),
+        ("km per hr", 20),
+        ("m s-1", 72),
+        ("m s^-1", 72),
+        ("ms-1", 72),
+        ("m.s-1", 72),
+        ("m·s⁻¹", 72),
+        ("metres/sec", 72),
+        ("m/sec", 72),
+    ],
+)
+def test_every_written_form_of_a_speed_unit_is_read(unit, kph):
+    text = f"I was driving at 20 {unit} when a kid ran out from behind a parked van in front of me."
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+def test_an_acceleration_in_exponents_is_no_speed():
+    text = "I was driving at 50 km/h and braked at 6 m s^-2 when a kid ran out in front of me."
+    assert _ego(text) == pytest.approx(50 * KPH, abs=0.05)

@@ -62,8 +62,24 @@ _CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|appr
 _MILEAGE = re.compile(
     r"\b((?:has|have|had|having|with|got)(?:\s+(?:about|around|over|nearly|almost|just|only|well))*\s+)(\d+)\s*k\b(?![/'])"
 )
+#: An exponent of minus one as scientists write it ("h-1", "h^-1", "h⁻¹", "s^(-1)").
+_PER = r"\s*(?:\^\s*\(?\s*[-\u2212]\s*1\s*\)?|[-\u2212]1|\u207b\u00b9)(?!\d)"
+#: What joins the parts of a unit in scientific notation ("km h-1", "km.h-1", "km·h-1", "kmh-1").
+_JOIN = r"\s*[.\u00b7\u22c5]?\s*"
+#: Every way a speed's unit is written that no rule below reads: with the slash after "p" ("mp/h", "km p/h",
+#: "km/ph"), with "hr" ("mi/hr", "km per hr"), in scientific notation ("km h-1", "m s^-1", "ms-1",
+#: "m·s⁻¹"), per second spelt short ("metres/sec", "m/sec"), and km/h with the hour of other languages
+#: (Dutch and Afrikaans "km/u", Scandinavian "km/t", Malay and Indonesian "km/j", "km/jam").
+_UNIT_FORMS = [
+    (re.compile(r"(\d)\s*(?:mp/h|m/ph|(?:mi|miles?)\s*(?:/|\s+per\s+|\s+an?\s+)\s*hrs?)\b"), r"\1 mph"),
+    (re.compile(r"(\d)\s*kms?\s*(?:p/h|/ph|p/hr|(?:/|\s+per\s+|\s+an?\s+)\s*hrs?\b)"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*kms?" + _JOIN + r"(?:hr|h)" + _PER), r"\1 km/h"),
+    (re.compile(r"(\d)\s*kms?\s*/\s*(?:u|t|j|jam)\b"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*m" + _JOIN + r"s(?:ec)?" + _PER), r"\1 m/s"),
+    (re.compile(r"(\d)\s*(?:met(?:er|re)s?|m)\s*/\s*sec(?:ond)?s?\b(?!\s*\^)"), r"\1 m/s"),
+]
 #: Spelt-out or unusual speed units, as the reader's symbols.
-_UNITS = [
+_UNITS = _UNIT_FORMS + [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
