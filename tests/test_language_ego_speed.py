@@ -753,3 +753,104 @@ def test_the_cruise_setting_or_a_number_sat_on_is_the_egos_speed(text, kph):
 )
 def test_a_cruise_setting_of_another_or_a_time_is_not_the_egos_speed(text):
     assert _ego(text) not in (pytest.approx(90 / 3.6), pytest.approx(20 / 3.6))
+
+
+# --- a bare speed after a verb of going and the manner of going ("going slowly 20", "going straight with 40") ----
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("Late last night on a one-way street I was going slowly 20. A courier came the wrong way in my lane.", 20),
+        ("We were driving carefully 30, then a boy ran out from behind the bus.", 30),
+        ("I was travelling steadily 50 on the ring road and a lorry pulled out of a side road.", 50),
+        ("my light was green, i was going straight with 40, a scooter ran the red from the left and i hit him", 40),
+        ("I was going very slowly 15, a cyclist came off the pavement right in front of me.", 15),
+        ("I was driving with about 60 when a van pulled out of a side road on my left.", 60),
+        ("Was driving normally 40 when a kid on a bike came out of a driveway.", 40),
+    ],
+    ids=["slowly", "carefully", "steadily", "straight-with", "very-slowly", "with-about", "subjectless"],
+)
+def test_a_bare_speed_after_a_verb_of_going_and_its_manner_is_the_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was going slowly 2 cars behind the bus when a boy ran out in front of me.",
+        "We were driving with 3 kids in the back when a van pulled out of a side road.",
+        "I was going with 2 friends to the match when a cyclist came off the pavement.",
+        "I was driving carefully. 20 minutes later a van pulled out of a side road.",
+    ],
+    ids=["cars-behind", "kids-in-the-back", "friends", "minutes-later"],
+)
+def test_a_number_after_a_verb_of_going_that_counts_or_times_is_no_speed(text):
+    assert _ego(text) is None
+
+
+# --- how far over the limit a speed was ("8 mph over the limit", "over the limit by 15 mph"): no one's speed -----
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 38 mph, 8 mph over the limit, when a cyclist pulled out in front of me.", 38 * MPH * 3.6),
+        ("The camera had me 12 km/h above the limit, and I was at 62 km/h when a kid ran out in front of me.", 62),
+        ("Speed at trigger 61 km/h, 11 km/h over the posted limit. A scooter came out between parked cars.", 61),
+        ("A kid ran out in front of me. I was 10 mph over the speed limit, I admit.", None),
+        ("I was over the limit by 15 mph when a cyclist swerved into my lane.", None),
+        ("Telematics: a scooter came out between parked cars on the left, speed 8 mph over limit at trigger.", None),
+    ],
+    ids=["aside", "above", "over-posted", "over-speed-limit", "over-by", "note"],
+)
+def test_how_far_over_the_limit_a_speed_was_is_no_speed(text, kph):
+    got = _ego(text)
+    assert (got is None) if kph is None else got == pytest.approx(kph * KPH, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 38 mph over the bridge when a cyclist pulled out in front of me.", 38 * MPH * 3.6),
+        ("I was at 60 km/h above the harbour when a van pulled out of a side road.", 60),
+    ],
+    ids=["over-the-bridge", "above-the-harbour"],
+)
+def test_a_speed_over_a_place_is_still_the_speed(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+# --- every way a speed's unit is written: per-hour slashes, SI exponents, other languages' hour ---------------
+@pytest.mark.parametrize(
+    "unit, kph",
+    [
+        ("mp/h", 20 * MPH * 3.6),
+        ("m/ph", 20 * MPH * 3.6),
+        ("mi/hr", 20 * MPH * 3.6),
+        ("mi per hr", 20 * MPH * 3.6),
+        ("miles/hr", 20 * MPH * 3.6),
+        ("km p/h", 20),
+        ("km/ph", 20),
+        ("km h-1", 20),
+        ("km h^-1", 20),
+        ("km·h⁻¹", 20),
+        ("km.h-1", 20),
+        ("km hr-1", 20),
+        ("km/u", 20),
+        ("km/t", 20),
+        ("km/jam", 20),
+        ("km per hr", 20),
+        ("m s-1", 72),
+        ("m s^-1", 72),
+        ("ms-1", 72),
+        ("m.s-1", 72),
+        ("m·s⁻¹", 72),
+        ("metres/sec", 72),
+        ("m/sec", 72),
+    ],
+)
+def test_every_written_form_of_a_speed_unit_is_read(unit, kph):
+    text = f"I was driving at 20 {unit} when a kid ran out from behind a parked van in front of me."
+    assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
+
+
+def test_an_acceleration_in_exponents_is_no_speed():
+    text = "I was driving at 50 km/h and braked at 6 m s^-2 when a kid ran out in front of me."
+    assert _ego(text) == pytest.approx(50 * KPH, abs=0.05)

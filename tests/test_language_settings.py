@@ -1089,3 +1089,35 @@ def test_a_signal_by_its_colour_stands_at_a_junction(text):
 )
 def test_other_lights_are_no_junction(text):
     assert read(text).map_kind != "crossroad"
+
+
+# --- a clock written with "h" as much of Europe writes it ("8h", "18h30"): a time, never a speed --------------
+@pytest.mark.parametrize(
+    "text, hour, kph",
+    [
+        ("I drove at about 25 km/h, my light was green, a scooter turned across me. It was raining, around 8h.", 8, 25),
+        ("At 18h30 a cyclist came out of a side road on my right, I was doing 30 km/h.", 18, 30),
+        ("Towards 7h15 a pedestrian stepped off the kerb in front of me; I was going at 40 km/h.", 7, 40),
+        ("A van cut in front of me at 22h, I was at 50 km/h on the ring road.", 22, 50),
+        ("Sunday, at about 9h, a cyclist swerved in front of me.", 9, None),
+    ],
+    ids=["around-8h", "18h30", "towards-7h15", "at-22h", "about-9h"],
+)
+def test_a_clock_written_with_h_is_the_time_not_a_speed(text, hour, kph):
+    r = read(text)
+    assert int(r.time.split(":")[0]) == hour
+    if kph is not None:
+        assert r.ego_speed_mps * 3.6 == pytest.approx(kph, abs=0.05)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "After a 3h drive I was doing 50 km/h when a cyclist swerved in front of me.",
+        "On a 2h trip to the coast a van cut in front of me at 60 km/h.",
+    ],
+    ids=["3h-drive", "2h-trip"],
+)
+def test_a_duration_in_hours_is_no_clock(text):
+    time = read(text).time
+    assert time is None or not time.startswith(("02:", "03:"))

@@ -62,8 +62,24 @@ _CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|appr
 _MILEAGE = re.compile(
     r"\b((?:has|have|had|having|with|got)(?:\s+(?:about|around|over|nearly|almost|just|only|well))*\s+)(\d+)\s*k\b(?![/'])"
 )
+#: An exponent of minus one as scientists write it ("h-1", "h^-1", "h⁻¹", "s^(-1)").
+_PER = r"\s*(?:\^\s*\(?\s*[-\u2212]\s*1\s*\)?|[-\u2212]1|\u207b\u00b9)(?!\d)"
+#: What joins the parts of a unit in scientific notation ("km h-1", "km.h-1", "km·h-1", "kmh-1").
+_JOIN = r"\s*[.\u00b7\u22c5]?\s*"
+#: Every way a speed's unit is written that no rule below reads: with the slash after "p" ("mp/h", "km p/h",
+#: "km/ph"), with "hr" ("mi/hr", "km per hr"), in scientific notation ("km h-1", "m s^-1", "ms-1",
+#: "m·s⁻¹"), per second spelt short ("metres/sec", "m/sec"), and km/h with the hour of other languages
+#: (Dutch and Afrikaans "km/u", Scandinavian "km/t", Malay and Indonesian "km/j", "km/jam").
+_UNIT_FORMS = [
+    (re.compile(r"(\d)\s*(?:mp/h|m/ph|(?:mi|miles?)\s*(?:/|\s+per\s+|\s+an?\s+)\s*hrs?)\b"), r"\1 mph"),
+    (re.compile(r"(\d)\s*kms?\s*(?:p/h|/ph|p/hr|(?:/|\s+per\s+|\s+an?\s+)\s*hrs?\b)"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*kms?" + _JOIN + r"(?:hr|h)" + _PER), r"\1 km/h"),
+    (re.compile(r"(\d)\s*kms?\s*/\s*(?:u|t|j|jam)\b"), r"\1 km/h"),
+    (re.compile(r"(\d)\s*m" + _JOIN + r"s(?:ec)?" + _PER), r"\1 m/s"),
+    (re.compile(r"(\d)\s*(?:met(?:er|re)s?|m)\s*/\s*sec(?:ond)?s?\b(?!\s*\^)"), r"\1 m/s"),
+]
 #: Spelt-out or unusual speed units, as the reader's symbols.
-_UNITS = [
+_UNITS = _UNIT_FORMS + [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
     (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
@@ -328,6 +344,18 @@ _FOOT_M, _YARD_M = 0.3048, 0.9144
 _LENGTHS = re.compile(r"(\d+(?:\.\d+)?)\s*(feet|foot|ft|yards?|yds?)\b(?! (?:per|a) second)")
 #: "1930 hrs", "0750h": a four-digit clock; "6pm", "3 in the afternoon", "9 at night": the hour said.
 _FOUR_DIGIT_CLOCK = re.compile(r"\b([01]\d|2[0-3])([0-5]\d)\s*(?:hrs|hours|h)\b")
+#: "18h30", "7h15", and "8h" after a word of when ("around 8h", "at 22h"): the clock as much of Europe writes
+#: it; a bare "3h" after anything else ("a 3h drive", "for 2h") is a duration.
+_CLOCK_WITH_H = re.compile(
+    r"\b([01]?\d|2[0-3])h([0-5]\d)\b|\b((?:at|around|about|approx|approximately|towards|toward|by|circa) )"
+    r"([01]?\d|2[0-3])h\b"
+)
+
+
+def _clock_with_h(m: re.Match) -> str:
+    return f"{m.group(1)}:{m.group(2)}" if m.group(1) else f"{m.group(3)}{m.group(4)}:00"
+
+
 _HOUR_OF = re.compile(r"\b(1[0-2]|0?[1-9])(?: o'?clock)? (in the (?:morning|afternoon|evening)|at night)\b")
 _HALF = {"in the morning": "am", "in the afternoon": "pm", "in the evening": "pm", "at night": "pm"}
 
@@ -675,6 +703,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
     text = _FOUR_DIGIT_CLOCK.sub(r"\1:\2", text)
+    text = _CLOCK_WITH_H.sub(_clock_with_h, text)  # ("around 8h", "18h30")
     # "..., PM." / "Snowing, AM": the half of the day said alone
     text = re.sub(r"(^|[,.;:]\s*)am(?=\s*(?:[,.;!]|$))", r"\1morning", text)
     text = re.sub(r"(^|[,.;:]\s*)pm(?=\s*(?:[,.;!]|$))", r"\1afternoon", text)

@@ -109,6 +109,35 @@ def before_hedge(tokens: list[str], i: int) -> str:
     return tokens[k] if k >= 0 else ""
 
 
+#: Words of how one goes, besides adverbs in -ly, that stand between a verb of going and its bare speed ("going
+#: straight 40", "driving slow 20"), and the words that strengthen them ("very slowly", "quite carefully").
+_MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really"})
+#: Words of a guess right before a number ("with about 60", "slowly, maybe 20").
+_HEDGE_WORDS = frozenset({"about", "around", "roughly", "approximately", "approx", "maybe", "like", "~", "some"})
+
+
+def _manner(word: str) -> bool:
+    return word in _MANNER or (len(word) > 4 and word.endswith("ly") and word not in APPROXIMATORS)
+
+
+def before_manner(tokens: list[str], i: int) -> str:
+    """The word before the manner of going said between it and the number at ``i`` ("going slowly 20":
+    "going"; "driving very carefully 30": "driving"; "going straight with 40", "driving with about 60":
+    "going", "driving"), or "" where no manner stands there. Why: a writer says how they went between
+    the verb and its speed, and a learner of English says the speed "with" it (as "con", "mit", "ile"
+    do), and the number is still the speed the verb says; the caller still asks that the number end
+    its phrase ("going slowly 2 cars behind" is no speed)."""
+    k = i - 1
+    while k > 0 and (tokens[k] in APPROXIMATORS or tokens[k] in BOUNDS or tokens[k] in _HEDGE_WORDS):
+        k -= 1
+    start = k
+    k -= k > 0 and tokens[k] == "with"
+    n = 0
+    while k > 0 and n < 3 and _manner(tokens[k]):
+        k, n = k - 1, n + 1
+    return tokens[k] if k < start and k >= 0 else ""
+
+
 def _start_of_guess(tokens: list[str], i: int) -> int:
     """The index of the word before the guess (and any hedge in it) that ends right before the number
     at ``i`` ("doing I reckon 40", "going, I don't know, 40", "at probably 40", "doing close to 50":
@@ -368,6 +397,28 @@ def crash_change_of_speed(tokens: list[str], i: int) -> bool:
         if tokens[k] in _CRASH_CHANGES or (tokens[k] == "v" and k and tokens[k - 1] == "delta"):
             return True
     return False
+
+
+#: Words between "over" and the limit it is over ("over the posted limit", "above the 30 mph speed limit").
+_BEFORE_LIMIT = frozenset({"the", "a", "posted", "speed", "legal", "signed", "its", "that", "mph", "km/h", "kph"})
+_OVER = frozenset({"over", "above"})
+
+
+def over_the_limit(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` says how far over a limit a speed was ("8 mph over the limit", "12 km/h
+    above the posted limit", "over the limit by 15 mph"): a difference of two speeds, no one's speed. Why: a
+    speeding report gives both, and the excess is the smaller number, said where a speed is said. Only with
+    "limit" after it: "38 mph over the bridge" is a speed over a place."""
+    j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
+    if j < len(tokens) and tokens[j] in _OVER:
+        k = j + 1
+        while k < len(tokens) and k <= j + 4 and (tokens[k] in _BEFORE_LIMIT or is_number(tokens[k])):
+            k += 1
+        if k < len(tokens) and tokens[k] == "limit":
+            return True
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""  # ("by 15 mph", "by 15."; not "by 30 m": a distance)
+    by = i >= 2 and tokens[i - 1] == "by" and (nxt in V.SPEED_UNITS or nxt in _NOTE_ENDS)
+    return by and "limit" in tokens[max(i - 5, 0) : i - 1]
 
 
 #: Words after "<number> speed" that end its phrase ("going 40 speed only", "coming 50 speed, ...", "with

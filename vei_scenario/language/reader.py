@@ -671,6 +671,8 @@ def _number(
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     if Q.crash_change_of_speed(tokens, i):  # ("delta-v V1 = 38 km/h": how hard it hit, no one's speed)
         return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
+    if Q.over_the_limit(tokens, i):  # ("8 mph over the limit": how far over, no one's speed)
+        return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
@@ -721,10 +723,11 @@ def _number(
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
     ends = nxt in ("", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but")
     hedged = prev != tokens[i - 1]  # ("going well over 60 passes me": a speed, however the clause goes on)
-    where = prev in _MOTION_BEFORE_SPEED and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
+    going = prev in _MOTION_BEFORE_SPEED or Q.before_manner(tokens, i) in _MOTION_BEFORE_SPEED  # ("going slowly 20")
+    where = going and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
     if i == 1 and tokens[0] in _HEADING_VERBS:
         return "skip", value, 1  # ("Drive 3 - please read": the heading's number, no speed)
-    if (prev in _MOTION_BEFORE_SPEED or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
+    if (going or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
     return "unknown", value, 1
 
