@@ -858,6 +858,18 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
             i = at_ego
             continue
+        half = sides.on_the_egos_half(tokens, i, _actor_word)
+        if half is not None:  # "on her side of the road": the ego's half, the ego told of in the third person
+            words = " ".join([tok, "our", *tokens[half - 1 : half]]) if tokens[half - 1] == "lane" else ""
+            words = words or " ".join([tok, "our", "side", "of", "the", "road"])
+            clauses[-1][1].append(_Mention("relation", "ahead", words, i, prev, end=half, det=det))
+            i = half
+            continue
+        middle = sides.in_the_middle_of_the_road(tokens, i)
+        if middle is not None:  # "down the middle of the road": on the line between the two halves
+            clauses[-1][1].append(_Mention("mid_road", None, " ".join(tokens[i:middle]), i, prev, end=middle))
+            i = middle
+            continue
         blind = sides.over_a_blind_place(tokens, i)
         if blind is not None:  # "came over the crest": into sight towards the ego (the place is read on)
             clauses[-1][1].append(_Mention("relation", "oncoming", tok, i, prev, end=blind, det=det))
@@ -1462,7 +1474,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "over_line", "speed_adjective", "toward", "place", "far_side",
+    "over_line", "speed_adjective", "toward", "place", "far_side", "mid_road",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -3817,6 +3829,8 @@ def _apply(m, who, r, link, added) -> None:
                 a.relation = m.value
         elif m.slot == "wrong_way":
             a.wrong_way = True
+        elif m.slot == "mid_road":
+            a.said.add("mid_road")  # (on the line between the halves: the ego's too, for one coming at it)
         elif m.slot == "over_line":
             a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
         elif m.slot == "returns" and not _gets_up(m):
