@@ -99,3 +99,23 @@ def test_a_compass_point_against_the_lane_it_is_in_is_the_wrong_way(text: str) -
 )
 def test_a_compass_point_with_its_own_lane_or_a_place_is_not_the_wrong_way(text: str) -> None:
     assert "wrong_way" not in _first(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came at me against the direction of travel, no lights, and I had to swerve.",
+        "Yesterday I was driving at 40 when an e-bike going retrograde appeared right in front of me.",
+        "The moped rode towards us against the driving direction and we braked.",
+        "Some kid on a scooter riding against the flow of traffic nearly hit my car.",
+        "I was doing 30 when a delivery rider came the other way against the one-way, straight at me.",
+    ],
+)
+def test_against_the_way_one_may_go_however_said_is_the_wrong_way(text: str) -> None:
+    assert _first(text)[0] == "wrong_way"
+
+
+def test_against_the_direction_on_its_own_cycle_lane_is_not_head_on() -> None:
+    """A rider against the traffic in a cycle lane of its own goes along that lane, not in the ego's."""
+    text = "A cyclist was riding against the direction of traffic in the cycle lane on our left."
+    assert "wrong_way" not in _first(text)
