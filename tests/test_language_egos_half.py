@@ -119,3 +119,22 @@ def test_against_the_direction_on_its_own_cycle_lane_is_not_head_on() -> None:
     """A rider against the traffic in a cycle lane of its own goes along that lane, not in the ego's."""
     text = "A cyclist was riding against the direction of traffic in the cycle lane on our left."
     assert "wrong_way" not in _first(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "My son had his driving lesson today. A man on an e-scooter came down the high street the wrong "
+        "way, straight at the car in our lane. He was doing about 30 and had to stop dead.",
+        "Coming home, a cyclist rode towards me on my side of the road with no lights. Had to brake hard.",
+    ],
+)
+def test_a_stop_said_free_after_a_head_on_road_user_is_the_egos(text: str) -> None:
+    """The ego's reaction, told after it, neither is its act nor hides its coming head-on."""
+    assert _first(text) == ["wrong_way"]
+
+
+def test_its_own_stop_then_said_stays_its_own() -> None:
+    """Its own stop, joined by "then" and placed in the road, is its act: it stays."""
+    text = "A cyclist came straight at me in my lane and then stopped dead in the middle of the road."
+    assert {"stop", "sudden_stop"} & set(_first(text))

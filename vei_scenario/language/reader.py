@@ -3167,7 +3167,8 @@ def _specialise(
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
     # (a stop said free of it, told after it, is the ego's reaction to it: crossing_reaction drops it)
-    unreacted = [b[0] for b in spec.behaviours if not b[1].get(crossing_reaction.MARK)] or names
+    unreacted = [b[0] for b in spec.behaviours if not b[1].get(crossing_reaction.MARK)]
+    unreacted = unreacted or names[:1] and ["keep_going"]  # (nothing of its own but coming on)
     if a.kind != "pedestrian" and motion.comes_head_on(unreacted, a.wrong_way, a.said, passes_another, a.returns):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
