@@ -1700,6 +1700,17 @@ WRONG_WAY = (
     "wrong direction",
     "the wrong direction",
     "in the wrong direction",
+    # (against the way one may go, however said: a report's "against the direction of travel", a
+    # translation's "against the driving direction" or "retrograde", a cyclist's "salmoning")
+    "against the direction of travel",
+    "against the direction of traffic",
+    "against the driving direction",
+    "against the traffic flow",
+    "against the flow of traffic",
+    "against the one-way",
+    "retrograde",
+    "going retrograde",
+    "salmoning",
 )
 #: Over the line that parts the two directions ("half over the centre line", "straddling the white
 #: line"): partly in the other direction's lane, so in the ego's for one coming towards it. ("middle

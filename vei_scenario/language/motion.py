@@ -98,10 +98,12 @@ def comes_head_on(
     no overtake, as it never drove the ego's way; so one said to come the wrong way that only goes
     past the ego ("came the wrong way down the lane and squeezed past me") is coming head-on too. One
     coming towards the ego that goes back to its own side or lane (``returns``: "swerved back over at
-    the last second") was out of it, on the ego's side: head-on too, however its coming was said."""
+    the last second") was out of it, on the ego's side: head-on too, however its coming was said. One
+    coming towards the ego in the middle of the road (``"mid_road"``) is half on the ego's side."""
     against = wrong_way or "oncoming" in said
     meets = wrong_way and not passes_another and "overtake" in names  # (the wrong way, then past the ego)
-    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said) or meets or returns
+    middle = "mid_road" in said and "oncoming" in said  # ("down the middle of the road towards me")
+    placed = "in_ego_lane" in said or (wrong_way and "oncoming" in said) or meets or returns or middle
     moves = _HEAD_ON_MOVES if passes_another else _HEAD_ON_MOVES | {"overtake"}
     return against and placed and bool(names) and set(names) <= moves
 
@@ -817,9 +819,12 @@ def _across_as_a_turn(mentions: list, gone: str | None) -> list:
 
 
 _OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+#: (a bare compass point only right before the lane: "riding north in the southbound carriageway", not
+#: "north of the bridge in the southbound lane"; a lane's kind may come between: "southbound bike lane")
 _COMPASS_LANE = re.compile(
-    r"\b(north|south|east|west)bound\b(?:\s+\S+){0,3}?\s+(?:in|on|along|down|up|into)\s+(?:the|a)\s+"
-    r"(north|south|east|west)bound\s+(?:lane|lanes|carriageway|side)\b"
+    r"\b(north|south|east|west)(?:bound\b(?:\s+\S+){0,3}?)?\s+(?:in|on|along|down|up|into)\s+(?:the|a)\s+"
+    r"(north|south|east|west)bound\s+(?:painted\s+|marked\s+|segregated\s+|protected\s+)?"
+    r"(?:bike\s+|cycle\s+|bus\s+)?(?:lane|lanes|carriageway|side)\b"
 )
 
 

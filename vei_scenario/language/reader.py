@@ -861,6 +861,18 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
             i = at_ego
             continue
+        half = sides.on_the_egos_half(tokens, i, _actor_word)
+        if half is not None:  # "on her side of the road": the ego's half, the ego told of in the third person
+            words = " ".join([tok, "our", *tokens[half - 1 : half]]) if tokens[half - 1] == "lane" else ""
+            words = words or " ".join([tok, "our", "side", "of", "the", "road"])
+            clauses[-1][1].append(_Mention("relation", "ahead", words, i, prev, end=half, det=det))
+            i = half
+            continue
+        middle = sides.in_the_middle_of_the_road(tokens, i)
+        if middle is not None:  # "down the middle of the road": on the line between the two halves
+            clauses[-1][1].append(_Mention("mid_road", None, " ".join(tokens[i:middle]), i, prev, end=middle))
+            i = middle
+            continue
         blind = sides.over_a_blind_place(tokens, i)
         if blind is not None:  # "came over the crest": into sight towards the ego (the place is read on)
             clauses[-1][1].append(_Mention("relation", "oncoming", tok, i, prev, end=blind, det=det))
@@ -1465,7 +1477,7 @@ VERB_CRITICALITY = {
 }
 _POSITIONAL = (
     "relation", "side", "lane_side", "kerb", "kerb_side", "arm", "stationary", "wrong_way", "returns",
-    "over_line", "speed_adjective", "toward", "place", "far_side",
+    "over_line", "speed_adjective", "toward", "place", "far_side", "mid_road",
 )  # fmt: skip
 _VERBS = ("behaviour", "turn", "unknown_verb", "ego_verb", "speed_word")
 
@@ -3162,7 +3174,10 @@ def _specialise(
         same = ("cut_in", "cross_in_front", "run_red_light", "keep_going")  # ("... and crossed into our path")
         spec.behaviours = [("turn_across", {}, crit, link)] + [b for b in spec.behaviours[1:] if b[0] not in same]
         return
-    if a.kind != "pedestrian" and motion.comes_head_on(names, a.wrong_way, a.said, passes_another, a.returns):
+    # (a stop said free of it, told after it, is the ego's reaction to it: crossing_reaction drops it)
+    unreacted = [b[0] for b in spec.behaviours if not b[1].get(crossing_reaction.MARK)]
+    unreacted = unreacted or names[:1] and ["keep_going"]  # (nothing of its own but coming on)
+    if a.kind != "pedestrian" and motion.comes_head_on(unreacted, a.wrong_way, a.said, passes_another, a.returns):
         # (a vehicle seen coming from the other way drifts over into the ego's lane; a rider rides in it)
         in_lane = a.kind in RIDERS or sides.starts_in_ego_lane(a.said)
         spec.behaviours = [("wrong_way", {"returns": 1.0} if a.returns else {}, crit, link)]
@@ -3825,6 +3840,8 @@ def _apply(m, who, r, link, added) -> None:
                 a.relation = m.value
         elif m.slot == "wrong_way":
             a.wrong_way = True
+        elif m.slot == "mid_road":
+            a.said.add("mid_road")  # (on the line between the halves: the ego's too, for one coming at it)
         elif m.slot == "over_line":
             a.said.add("in_ego_lane")  # (partly in the other way's lane: the ego's, for one coming at it)
         elif m.slot == "returns" and not _gets_up(m):

@@ -769,7 +769,7 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     if tokens[i] not in ("towards", "toward", "at", "for") or i + 1 >= len(tokens):
         return None
     after = tokens[i + 1]
-    if after in _EGO_AFTER:
+    if after in _EGO_AFTER or told_of_the_ego(tokens, i + 1):
         end = i + 2
     elif after in ("my", "our") and i + 2 < len(tokens) and tokens[i + 2] not in ("left", "right"):
         end = i + 3  # ("towards my car", "at our van")
@@ -785,6 +785,114 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
             said_by_the_lexicon = k == i - 1 and bool(verbs & _LEXICON_TOWARDS.get(tokens[i], set()))
             return None if said_by_the_lexicon else end  # (right after "came" the lexicon's "come at" reads it)
     return None
+
+
+#: The ego told of in the second or third person, as whom a road user travels at ("towards you",
+#: "straight at her") or whose half of the road it is on ("on her side of the road"), with the
+#: pronoun a clause of the ego's own would open with (None: "you" is the reader, never a road user).
+_EGO_PERSONS = {"you": None, "your": None, "him": "he", "his": "he", "her": "she", "them": "they", "their": "they"}
+#: The narrator as a subject: a text told by "I" or "we" names the ego so, and "her" is someone else.
+_NARRATOR_SUBJECTS = frozenset({"i", "we"})
+#: Words that open a clause: its subject comes after them.
+_CLAUSE_OPENERS = frozenset({".", ";", ":", "!", "?", ",", "and", "but", "when", "while", "as", "until", "before"})
+
+
+def told_of_the_ego(tokens: list[str], j: int) -> bool:
+    """Whether the pronoun at token ``j`` ("you", "your"; "her", "him", "them", "his", "their") is the
+    ego told of in the second or third person, as the one a road user comes at ("came towards her",
+    "riding towards you") or whose half of the road it is on ("on her side of the road"). "You" is the
+    reader, the one driving in a text that tells them their own drive. A third-person pronoun is the
+    ego only in a text with no narrator of its own ("I", "we": then "her" is someone else), and not
+    when its clause's subject is that same person ("she kept to her side of the road": her own)."""
+    person = _EGO_PERSONS.get(tokens[j], "")
+    if person is None:
+        return True
+    if not person or _NARRATOR_SUBJECTS & set(tokens):
+        return False
+    k = j - 1
+    while k >= 0 and tokens[k] not in _CLAUSE_OPENERS:
+        if tokens[k] == person:
+            return False  # (its clause's own subject: "he stayed on his side")
+        k -= 1
+    return True
+
+
+#: The object form of a possessive pronoun ("her" side: "towards her").
+_OBJECT_OF = {"your": "you", "his": "him", "her": "her", "their": "them"}
+
+
+def _said_at_before(tokens: list[str], k: int) -> bool:
+    """Whether the possessive pronoun at token ``k`` is the ego's because its clause has just said the
+    road user comes at that person ("towards her on her side of the road", "at him in his lane"); a
+    possessive with nothing such before it is its own subject's ("a cyclist riding on his side of
+    the road": the cyclist's own half). "Your" is the reader's, the one driving, anyway."""
+    if tokens[k] == "your":
+        return True
+    start = max(0, k - 6)
+    return any(
+        tokens[j] in ("towards", "toward", "at") and tokens[j + 1] == _OBJECT_OF.get(tokens[k])
+        for j in range(start, k - 1)
+    )
+
+
+#: A half of the road or a lane one owns ("side of the road", "side of the street", "lane", "own lane").
+_HALVES = (["side", "of", "the", "road"], ["side", "of", "the", "street"], ["own", "lane"], ["lane"])
+
+
+def on_the_egos_half(tokens: list[str], i: int, road_user_word) -> int | None:
+    """Where a phrase ends that puts a road user on the ego's half of the road or in its lane, with the
+    ego told of in the second or third person, starting at token ``i`` ("on her side of the road", "in
+    your lane", "on Ruth's side of the road"), or None. Why: the lexicon reads "my side of the road"
+    and "in our lane"; a story or a report about someone else says the same of them. The owner is a
+    pronoun of the ego (``told_of_the_ego``) or a person's name with "'s" (not a road user's:
+    ``road_user_word`` says which words name one, "the van's lane" is its own)."""
+    if tokens[i] not in ("on", "in", "down", "along", "up") or i + 2 >= len(tokens):
+        return None
+    k = i + 1 + (tokens[i + 1 : i + 3] == ["the", "ego"])  # ("on the ego's side": a role the reader named so)
+    if tokens[k] in _EGO_PERSONS:
+        if not (told_of_the_ego(tokens, k) and _said_at_before(tokens, k)):
+            return None
+        k += 1
+    elif (
+        k + 1 < len(tokens)
+        and tokens[k + 1] == "'s"
+        and tokens[k].isalpha()
+        and tokens[k] != "its"
+        and not road_user_word(tokens[k])
+    ):
+        k += 2
+    else:
+        return None
+    half = next((h for h in _HALVES if tokens[k : k + len(h)] == h), None)
+    return None if half is None else k + len(half)
+
+
+#: Words that stress a place exactly ("right in the middle", "slap bang in the middle").
+_INTENSIFIERS = frozenset({"right", "smack", "slap", "bang", "dead", "plumb", "slap-bang", "smack-bang"})
+#: Words that may follow a bare "down the middle" (not "the middle lane": a lane of its own).
+_AFTER_A_BARE_MIDDLE = frozenset({"and", "but", "towards", "toward", "at", "straight", "when", "as", "with", "so"})
+#: The whole width a road user may be in the middle of: the road, or a lane when the road has one.
+_WIDTHS = frozenset({"road", "lane", "street", "carriageway", "track", "roadway", "lane's"})
+
+
+def in_the_middle_of_the_road(tokens: list[str], i: int) -> int | None:
+    """Where a phrase ends that puts a road user in the middle of the road, starting at token ``i``
+    ("in the middle of the road", "right down the middle of the lane", "down the middle"), or None.
+    Why: the middle of a two-way road is on the line between its halves, so one said there coming
+    towards the ego is partly on the ego's half, as one said over the centre line is. Not "the
+    middle lane" (a lane of a road with three) nor "in the middle of the junction" (a place)."""
+    j = i
+    while j < len(tokens) and tokens[j] in _INTENSIFIERS:
+        j += 1  # ("right in the middle", "slap bang in the middle")
+    if j == len(tokens) or tokens[j] not in ("in", "down", "along", "up", "through") or j + 3 > len(tokens):
+        return None
+    k = j + 1 + (tokens[j + 1] == "the")
+    if tokens[k : k + 1] != ["middle"]:
+        return None
+    if tokens[k + 1 : k + 3] != ["of", "the"]:
+        bare = k + 1 == len(tokens) or not tokens[k + 1].isalpha() or tokens[k + 1] in _AFTER_A_BARE_MIDDLE
+        return k + 1 if tokens[j] in ("down", "along", "up") and bare else None  # ("right down the middle")
+    return k + 4 if tokens[k + 3 : k + 4] and tokens[k + 3] in _WIDTHS else None
 
 
 #: The verbs the lexicon's own oncoming phrases put right before "at" / "towards" ("come at", "drive
