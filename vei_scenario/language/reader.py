@@ -43,6 +43,7 @@ from vei_scenario.language import (
     from_cover,
     generic_ego,
     junctions,
+    kerb_crossing,
     kerb_ride,
     kind_in_general,
     lane_moves,
@@ -2926,13 +2927,20 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
 
 def _out_from_cover(a: _Actor) -> None:
     """A walker or rider said to come out from behind or between something, of whom nothing says more
-    than that it goes, crosses from the kerb (:mod:`from_cover`); "behind" said there is where it hid,
-    not a place behind the ego ("stepped from behind a bus")."""
+    than that it goes, crosses from the kerb (:mod:`from_cover`); so does one said to come out from
+    cover or off the kerb of whom nothing more is said than brakes said free of it, which are the
+    ego's (:mod:`kerb_crossing`). "Behind" said there is where it hid, not a place behind the ego
+    ("stepped from behind a bus")."""
     quiet = not (a.along or a.stationary or a.passed or a.wrong_way or a.followed or a.own_lane)
-    if not a.from_cover or not from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+    off_the_side = a.from_cover or (a.kerb and a.came_from)
+    braked = kerb_crossing.crossing_then_brakes(a.kind, a.behaviours, quiet, bool(a.unknown)) if off_the_side else None
+    if braked:  # ("came out between parked cars, I braked": its crossing, then the ego's brake)
+        a.behaviours = braked
+    elif a.from_cover and from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+        link = a.behaviours[0][3] if a.behaviours else "sequence"
+        a.behaviours = [("cross_in_front", {}, None, link)]
+    else:
         return
-    link = a.behaviours[0][3] if a.behaviours else "sequence"
-    a.behaviours = [("cross_in_front", {}, None, link)]
     a.said.discard("behind")
     if a.relation == "behind":
         a.relation = None

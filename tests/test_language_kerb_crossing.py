@@ -1,0 +1,71 @@
+"""A walker or rider said to come off the kerb or out from cover, of whom nothing more is said than a
+brake (the ego's, with no subject or said of the driver), crosses the ego's road; the brake is the
+ego's. Wordings written for the class in several registers (a text, a police note, a voice note, a
+script, a test log, a forum post), none taken from a corpus; near misses keep their readings."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language import kerb_crossing
+from vei_scenario.language.crossing_reaction import MARK
+from vei_scenario.language.reader import read
+
+
+def _acts(text: str) -> list[tuple[str, list[str], str | None]]:
+    """Each road user read from ``text``: its kind, its behaviours' names and where it starts."""
+    return [(a.kind, [b[0] for b in a.behaviours], a.relation) for a in read(text).actors]
+
+
+def _mover(text: str) -> tuple[str, list[str], str | None]:
+    """The first road user read from ``text`` that is no parked vehicle."""
+    return next(x for x in _acts(text) if x[1] != ["stop"])
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("boy on bike came out between parked vans i braked just missed him", "bicycle"),
+        ("Kid on bike came out between parked cars. Braked hard, missed him.", "bicycle"),
+        ("A lad on an e-scooter flew off the footpath, hit the brakes, missed him by a foot.", "e-scooter"),
+        ("Jogger came off the curb on the right, braked hard.", "pedestrian"),
+        ("One cyclist came off the footpath suddenly, applied brakes fully.", "bicycle"),
+        ("A woman with a pram came off the pavement on the left, braked hard, stopped in time.", "pedestrian"),
+    ],
+)
+def test_out_of_cover_then_a_brake_crosses(text: str, kind: str) -> None:
+    """Out from cover and then the ego's brake: a crossing from the kerb, the brake no act of its own."""
+    got_kind, names, relation = _mover(text)
+    assert (got_kind, names) == (kind, ["cross_in_front"])
+    assert relation is not None and relation.startswith("roadside")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came off the pavement and stopped at the kerb.",  # (its own stop, placed)
+        "A cyclist came from behind a bus and overtook me.",  # (its move is said)
+        "A man was standing between two parked cars.",  # (no coming out)
+        "A van came out from behind a parked lorry, I braked.",  # (a vehicle joins the traffic)
+    ],
+)
+def test_near_misses_keep_their_reading(text: str) -> None:
+    """No crossing where the road user's own move or stop is said, it does not come out, or it drives."""
+    assert all(names[:1] != ["cross_in_front"] for _, names, _ in _acts(text))
+
+
+def test_only_going_and_free_brakes() -> None:
+    """The pass reads bare goings and free brakes only, of walkers and riders only, quiet ones only."""
+    free = ("sudden_stop", {MARK: 1.0}, None, "sequence")
+    going = ("keep_going", {}, None, "sequence")
+    own = ("sudden_stop", {}, None, "sequence")
+    assert kerb_crossing.crossing_then_brakes("pedestrian", [going, free], True, False) == [
+        ("cross_in_front", {}, None, "sequence"),
+        free,
+    ]
+    assert kerb_crossing.crossing_then_brakes("e-scooter", [free], True, True) is not None  # ("darts off")
+    assert kerb_crossing.crossing_then_brakes("e-scooter", [free], True, False) is None  # (no move said)
+    assert kerb_crossing.crossing_then_brakes("pedestrian", [going, own], True, False) is None  # (its own stop)
+    assert kerb_crossing.crossing_then_brakes("car", [going, free], True, False) is None  # (a vehicle)
+    assert kerb_crossing.crossing_then_brakes("pedestrian", [going, free], False, False) is None  # (not quiet)
+    assert kerb_crossing.crossing_then_brakes("pedestrian", [going], True, False) is None  # (no brake)
