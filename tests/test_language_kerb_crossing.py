@@ -47,6 +47,7 @@ def test_out_of_cover_then_a_brake_crosses(text: str, kind: str) -> None:
         "A cyclist came from behind a bus and overtook me.",  # (its move is said)
         "A man was standing between two parked cars.",  # (no coming out)
         "A van came out from behind a parked lorry, I braked.",  # (a vehicle joins the traffic)
+        "A jogger came off the footpath and ran down the middle of the road towards us, braked.",  # (at the ego)
     ],
 )
 def test_near_misses_keep_their_reading(text: str) -> None:

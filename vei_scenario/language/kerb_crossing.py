@@ -12,9 +12,10 @@ drops.
 
 What must not be read so: a vehicle (one coming off the side of the road joins the traffic, read
 elsewhere), a road user whose own move is said (along the kerb, standing, passed, waiting, against the
-traffic, in a lane of its own: the caller tells it as not ``quiet``), one whose stop is its own (said
-with its noun, placed in the road, joined by "then": no free mark), and one of whom only a brake is
-said with no going at all and no verb of its own (nothing says it moved off the side).
+traffic, in a lane of its own, coming towards the ego: the caller tells it as not ``quiet``), one whose
+stop is its own (said with its noun, placed in the road, joined by "then": no free mark), and one of
+whom only a brake is said with no going at all and no verb of its own (nothing says it moved off the
+side).
 """
 
 from __future__ import annotations

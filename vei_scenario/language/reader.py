@@ -2933,7 +2933,12 @@ def _out_from_cover(a: _Actor) -> None:
     ("stepped from behind a bus")."""
     quiet = not (a.along or a.stationary or a.passed or a.wrong_way or a.followed or a.own_lane)
     off_the_side = a.from_cover or (a.kerb and a.came_from)
-    braked = kerb_crossing.crossing_then_brakes(a.kind, a.behaviours, quiet, bool(a.unknown)) if off_the_side else None
+    at_the_ego = a.relation == "oncoming" or "oncoming" in a.said  # ("... and ran down the road towards us")
+    braked = (
+        kerb_crossing.crossing_then_brakes(a.kind, a.behaviours, quiet and not at_the_ego, bool(a.unknown))
+        if off_the_side
+        else None
+    )
     if braked:  # ("came out between parked cars, I braked": its crossing, then the ego's brake)
         a.behaviours = braked
     elif a.from_cover and from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
