@@ -70,3 +70,33 @@ def test_only_going_and_free_brakes() -> None:
     assert kerb_crossing.crossing_then_brakes("car", [going, free], True, False) is None  # (a vehicle)
     assert kerb_crossing.crossing_then_brakes("pedestrian", [going, free], False, False) is None  # (not quiet)
     assert kerb_crossing.crossing_then_brakes("pedestrian", [going], True, False) is None  # (no brake)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("A boy on a bike came off the pavement on the right. It stopped and waited for him.", "bicycle"),
+        ("A lady came off the kerb on my left and it slowed right down for her.", "pedestrian"),
+        ("Some kids came off the pavement, it stopped for them.", "pedestrian"),
+        ("A man on a bike came off the footpath, he braked and waited for him.", "bicycle"),
+        ("Lad on a scooter came off the sidewalk. It halted for him, no drama.", "e-scooter"),
+    ],
+)
+def test_a_stop_made_for_the_one_road_user_is_the_egos(text: str, kind: str) -> None:
+    """A pronoun that stops or waits "for him/her/them", the only road user named, is not that road user."""
+    got_kind, names, relation = _mover(text)
+    assert (got_kind, names) == (kind, ["cross_in_front"])
+    assert relation is not None and relation.startswith("roadside")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A girl on a bike came off the pavement. She stopped and waited for him.",  # (another person)
+        "A van pulled out. It stopped and waited for her.",  # (a vehicle is no "her")
+        "A cyclist came off the pavement. He stopped and waited for the bus.",  # (no pronoun object)
+    ],
+)
+def test_a_stop_for_someone_else_stays(text: str) -> None:
+    """Another person's pronoun, a vehicle or a named object: the stop keeps its reading."""
+    assert all(names[:1] != ["cross_in_front"] for _, names, _ in _acts(text))

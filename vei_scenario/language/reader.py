@@ -1920,6 +1920,9 @@ def _read(text: str) -> Reading:
                         if who == "ego" and ego_is_a_person and actors and m.words not in bound:
                             who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
+                    person = actors == [who] and who.kind in (*VULNERABLE, UNKNOWN_KIND)  # (him, her: no vehicle)
+                    if person and crossing_reaction.stops_for_another(scanned, m.start):
+                        who = "ego"  # ("a lad came off the kerb; it stopped and waited for him": not the lad)
                     role = "subject"
                 elif m.slot == "member":
                     pool = group or last_group or []
