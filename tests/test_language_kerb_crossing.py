@@ -100,3 +100,40 @@ def test_a_stop_made_for_the_one_road_user_is_the_egos(text: str, kind: str) -> 
 def test_a_stop_for_someone_else_stays(text: str) -> None:
     """Another person's pronoun, a vehicle or a named object: the stop keeps its reading."""
     assert all(names[:1] != ["cross_in_front"] for _, names, _ in _acts(text))
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        (
+            "A man on a bike rode along the footpath, then went off the kerb and across the road in front of me.",
+            "bicycle",
+        ),
+        ("Rider on a scooter rides along the pavement on my left, then swings off the kerb and across.", "e-scooter"),
+        ("Pedestrian walking along the footpath, then came from the kerb across the road.", "pedestrian"),
+        (
+            "Bloke on a bike cruising down the sidewalk, then he's come off the curb straight across my bonnet.",
+            "bicycle",
+        ),
+        ("Cyclist was riding on the footpath then came off the kerb in front of us.", "bicycle"),
+    ],
+)
+def test_along_the_pavement_then_off_the_kerb_crosses(text: str, kind: str) -> None:
+    """Going along the pavement, then off the kerb with the subject left out: the kerb it leaves is its
+    own, and leaving it is a crossing (the pavement is off the road, no going along the ego's road)."""
+    got_kind, names, relation = _mover(text)
+    assert (got_kind, names) == (kind, ["cross_in_front"])
+    assert relation is not None and relation.startswith("roadside")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rode along the pavement.",  # (stays on it)
+        "A cyclist was riding along the pavement, then on the road ahead of us.",  # (no leaving said)
+        "A lad rode along the footpath beside me, past the kerb, all the way to the shops.",  # (no leaving)
+    ],
+)
+def test_along_the_pavement_and_staying_is_no_crossing(text: str) -> None:
+    """Riding along the pavement with no leaving of it said: no crossing."""
+    assert all(names[:1] != ["cross_in_front"] for _, names, _ in _acts(text))

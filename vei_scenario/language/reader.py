@@ -2303,6 +2303,14 @@ def _read(text: str) -> Reading:
                     who = subject  # "..., then cuts back": what it does, said without naming it again
                 if (
                     who is None
+                    and m.slot in ("kerb", "kerb_side")
+                    and _from(m)
+                    and not named
+                    and isinstance(clause_subject, _Actor)
+                ):  # "..., then went off the kerb and across": where the clause's subject, said before, leaves from
+                    who = clause_subject
+                if (
+                    who is None
                     and m.slot == "relation"
                     and isinstance(subject, _Actor)
                     and any(x is subject for x, _ in added)
