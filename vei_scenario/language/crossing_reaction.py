@@ -25,6 +25,7 @@ from collections.abc import Callable
 
 from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.ego import SENTENCE_END
+from vei_scenario.language.lemmas import lemmas
 
 #: Moves that bring a road user across the ego's path rather than along its lane.
 CROSSING = frozenset(("cross_in_front", "turn_into", "turn_across", "run_red_light", "wrong_way"))
@@ -99,3 +100,36 @@ def drop_egos_reactions(behaviours: list) -> list:
             continue  # ("pulled out right in front of her. She braked": hers)
         out.append((name, cfg, crit, link))
     return out
+
+
+#: Verbs (lemmas) of stopping, waiting or slowing for someone ("stopped for him", "waited for her").
+_HOLDING = frozenset(("stop", "wait", "slow", "brake", "pause", "halt", "yield", "hold"))
+#: Object pronouns that name whom a stop is made for (not "it": "waited for it to change" is a light).
+_FOR_WHOM = frozenset(("him", "her", "them"))
+#: Subject pronouns read here, each with the object pronoun of its own sex ("" for "it": any object).
+_SUBJECTS = {"it": "", "he": "him", "she": "her"}
+#: Marks that end a clause: a stop said after one is another clause's.
+_CLAUSE_END = frozenset((",", ";", ":"))
+#: How many words after its subject a stop made for someone is looked for.
+_FOR_WINDOW = 10
+
+
+def stops_for_another(tokens: list[str], start: int) -> bool:
+    """Whether the clause of the pronoun subject at ``tokens[start]`` says a stop, a wait or a slowing
+    made for someone an object pronoun names ("it just stopped and waited for him", "she slowed right
+    down for them"): a verb of holding, then "for" and "him", "her" or "them", before the clause ends.
+    Why: one who stops for a road user is not that road user; where that road user is the only one named,
+    the one who stops for it is the ego. A person's pronoun of the other sex ("she waited for him") may
+    name the road user as well as the object does, and "they" a group: neither is read."""
+    subject = tokens[start]
+    if subject not in _SUBJECTS:
+        return False
+    held = False
+    for k in range(start + 1, min(start + 1 + _FOR_WINDOW, len(tokens))):
+        word = tokens[k]
+        if word in SENTENCE_END or word in _CLAUSE_END:
+            return False
+        held = held or bool(set(lemmas(word).get("VERB", ())) & _HOLDING)
+        if held and word in _FOR_WHOM and tokens[k - 1] == "for":
+            return _SUBJECTS[subject] in ("", word)
+    return False

@@ -43,6 +43,7 @@ from vei_scenario.language import (
     from_cover,
     generic_ego,
     junctions,
+    kerb_crossing,
     kerb_ride,
     kind_in_general,
     lane_moves,
@@ -1934,6 +1935,9 @@ def _read(text: str) -> Reading:
                         if who == "ego" and ego_is_a_person and actors and m.words not in bound:
                             who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
+                    person = actors == [who] and who.kind in (*VULNERABLE, UNKNOWN_KIND)  # (him, her: no vehicle)
+                    if person and crossing_reaction.stops_for_another(scanned, m.start):
+                        who = "ego"  # ("a lad came off the kerb; it stopped and waited for him": not the lad)
                     role = "subject"
                 elif m.slot == "member":
                     pool = group or last_group or []
@@ -2316,6 +2320,14 @@ def _read(text: str) -> Reading:
                     who = clause_subject  # "..., and then overtakes it at 25 km/h": the one who overtakes
                 if who is None and m.slot in ("returns", "wrong_way") and isinstance(subject, _Actor):
                     who = subject  # "..., then cuts back": what it does, said without naming it again
+                if (
+                    who is None
+                    and m.slot in ("kerb", "kerb_side")
+                    and _from(m)
+                    and not named
+                    and isinstance(clause_subject, _Actor)
+                ):  # "..., then went off the kerb and across": where the clause's subject, said before, leaves from
+                    who = clause_subject
                 if (
                     who is None
                     and m.slot == "relation"
@@ -2946,13 +2958,25 @@ def _ego_reaction(mentions, k: int, a: _Actor, first_person: bool = False) -> bo
 
 def _out_from_cover(a: _Actor) -> None:
     """A walker or rider said to come out from behind or between something, of whom nothing says more
-    than that it goes, crosses from the kerb (:mod:`from_cover`); "behind" said there is where it hid,
-    not a place behind the ego ("stepped from behind a bus")."""
+    than that it goes, crosses from the kerb (:mod:`from_cover`); so does one said to come out from
+    cover or off the kerb of whom nothing more is said than brakes said free of it, which are the
+    ego's (:mod:`kerb_crossing`). "Behind" said there is where it hid, not a place behind the ego
+    ("stepped from behind a bus")."""
     quiet = not (a.along or a.stationary or a.passed or a.wrong_way or a.followed or a.own_lane)
-    if not a.from_cover or not from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+    off_the_side = a.from_cover or (a.kerb and a.came_from)
+    at_the_ego = a.relation == "oncoming" or "oncoming" in a.said  # ("... and ran down the road towards us")
+    braked = (
+        kerb_crossing.crossing_then_brakes(a.kind, a.behaviours, quiet and not at_the_ego, bool(a.unknown))
+        if off_the_side
+        else None
+    )
+    if braked:  # ("came out between parked cars, I braked": its crossing, then the ego's brake)
+        a.behaviours = braked
+    elif a.from_cover and from_cover.crosses_from_cover(a.kind, a.behaviours, quiet):
+        link = a.behaviours[0][3] if a.behaviours else "sequence"
+        a.behaviours = [("cross_in_front", {}, None, link)]
+    else:
         return
-    link = a.behaviours[0][3] if a.behaviours else "sequence"
-    a.behaviours = [("cross_in_front", {}, None, link)]
     a.said.discard("behind")
     if a.relation == "behind":
         a.relation = None
