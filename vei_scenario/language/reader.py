@@ -60,6 +60,7 @@ from vei_scenario.language import (
     scene_pace,
     scenery,
     sides,
+    start_gap,
     whose_act,
 )
 from vei_scenario.language import lexicon as L
@@ -281,6 +282,7 @@ class _Actor:
     edge: str | None = None  # the side of the road's edge it is said at ("along the right-hand kerb"), no lane
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
+    gaps_said: list = field(default_factory=list)  # every distance said of it (start_gap.Said), in order
     word: str = ""  # the words it was first named by
     det: str = ""  # the determiner it was first named with ("a", "the", "our"; none: "Bus was doing 45")
     named_after: str = ""  # the word right before its first name ("other" in "the other driver")
@@ -2530,6 +2532,9 @@ def _read(text: str) -> Reading:
     junction = r.map_kind in ("crossroad", "roundabout")
     # (what the whole text says, read once for every road user's behaviours below)
     left_hand, across, signal = sides.drives_on_left(scanned, text), turn_across_side(text), junctions.signal_said(said)
+    for a in actors:  # (of the distances said of it, the one where it is put in the scene)
+        if (start := start_gap.start_of(a.gaps_said, scanned, a.named_end)) is not None:
+            a.distance_m, a.end_gap = start[1], start[3]
     for a, slot, value in said_of:
         a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
@@ -3793,6 +3798,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "distance":
             a.distance_m = m.value
             a.end_gap = sides.gap_where_it_ends(a.behaviours)
+            a.gaps_said.append((m.start, m.value, m.prev, a.end_gap))
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
             if m.value == "behind":
