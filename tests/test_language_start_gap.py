@@ -71,3 +71,35 @@ def test_a_gap_said_before_it_is_named_gives_way_to_its_own() -> None:
 )
 def test_one_distance_is_taken_as_before(text: str, gap: float) -> None:
     assert gap in _gaps(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A child runs out from behind a parked car on the right when the ego is 12 m away.",
+        "The ego drives at 40 km/h. A man steps out from between two parked vans when the ego is 12 m from him.",
+        "A cyclist, hidden behind a row of parked cars, enters the road when the ego vehicle is 12 m away.",
+        "Ego 30 mph. Jogger emerges from behind a parked bus on the left, ego 12 m away at that moment.",
+        "We were doing 25 when a kid on a scooter shot out from behind a parked lorry, we were about 12 m off.",
+    ],
+)
+def test_a_gap_said_of_the_ego_is_to_the_one_coming_out_not_its_cover(text: str) -> None:
+    reading = read(text)
+    movers = [a for a in reading.actors if a.kind in ("pedestrian", "bicycle", "e-scooter")]
+    assert [a.distance_m for a in movers] == [12]
+    assert all(a.distance_m is None for a in reading.actors if a not in movers)
+
+
+def test_a_gap_to_a_parked_car_said_alone_stays_its_own() -> None:
+    # (nobody comes out of it: the parked car is the one the gap is to)
+    text = "The ego drives at 30 km/h. A car is parked on the left; the ego is 20 m away when it pulls out."
+    assert _gaps(text) == [20]
+
+
+def test_a_gap_to_one_standing_in_the_road_stays_its_own() -> None:
+    # (a stopped rider in the lane is what the ego comes up to, not cover; the car went away before)
+    text = (
+        "The car in front of me swerved into the left lane, and a guy on a scooter was stopped in the "
+        "middle of the lane. I was doing 30 and we were 10 m from him when I saw him."
+    )
+    assert [a.distance_m for a in read(text).actors if a.kind == "e-scooter"] == [10]

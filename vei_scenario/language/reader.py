@@ -1490,6 +1490,16 @@ def _drop_label(clauses):
     return out
 
 
+def _gap_holder(actors: list[_Actor]) -> _Actor:
+    """The road user a gap said of the ego is to: the one named last, passing over what someone comes out
+    from behind or between and parked ones that do nothing (yet): "a boy steps out from behind a parked
+    van when the ego is 15 m away" is 15 m to the boy; the van is where he comes from. Only such ones
+    named: the last of them (a parked car the ego nears before it pulls out). One standing in the road
+    ("a scooter stopped in the lane") is no cover: it is what the ego comes up to."""
+    acting = [a for a in actors if not (a.hides or (a.parked and not a.behaviours))]
+    return (acting or actors)[-1]
+
+
 def _comes_out_from(prev, m) -> bool:
     """Whether actor mention ``m`` names what someone comes out from behind, between or in front of
     ("from behind an ice-cream van", "out between parked cars", "from in front of the bus")."""
@@ -2287,7 +2297,7 @@ def _read(text: str) -> Reading:
                     prev = m
                     continue
                 if who == "ego" and m.slot == "distance" and actors:
-                    who = actors[-1]  # a gap said of the ego is the gap to the road user named last
+                    who = _gap_holder(actors)  # a gap said of the ego is the gap to the road user named last
                 if isinstance(clause_subject, _Actor) and _overtaken_coming(who, clause_subject, m):
                     _apply(m, who, r, link, added)  # (what it overtakes goes its way: towards the ego too)
                     who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
