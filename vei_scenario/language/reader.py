@@ -61,6 +61,7 @@ from vei_scenario.language import (
     scene_pace,
     scenery,
     sides,
+    start_gap,
     whose_act,
 )
 from vei_scenario.language import lexicon as L
@@ -282,6 +283,7 @@ class _Actor:
     edge: str | None = None  # the side of the road's edge it is said at ("along the right-hand kerb"), no lane
     came_from: bool = False  # a kerb or side said as where it comes from ("walks from the far side")
     end_gap: str | None = None  # the behaviour its distance is the end gap of ("overtakes, 3 m to spare")
+    gaps_said: list = field(default_factory=list)  # every distance said of it (start_gap.Said), in order
     word: str = ""  # the words it was first named by
     det: str = ""  # the determiner it was first named with ("a", "the", "our"; none: "Bus was doing 45")
     named_after: str = ""  # the word right before its first name ("other" in "the other driver")
@@ -1504,6 +1506,16 @@ def _drop_label(clauses):
     return out
 
 
+def _gap_holder(actors: list[_Actor]) -> _Actor:
+    """The road user a gap said of the ego is to: the one named last, passing over what someone comes out
+    from behind or between and parked ones that do nothing (yet): "a boy steps out from behind a parked
+    van when the ego is 15 m away" is 15 m to the boy; the van is where he comes from. Only such ones
+    named: the last of them (a parked car the ego nears before it pulls out). One standing in the road
+    ("a scooter stopped in the lane") is no cover: it is what the ego comes up to."""
+    acting = [a for a in actors if not (a.hides or (a.parked and not a.behaviours))]
+    return (acting or actors)[-1]
+
+
 def _comes_out_from(prev, m) -> bool:
     """Whether actor mention ``m`` names what someone comes out from behind, between or in front of
     ("from behind an ice-cream van", "out between parked cars", "from in front of the bus")."""
@@ -2308,7 +2320,7 @@ def _read(text: str) -> Reading:
                     prev = m
                     continue
                 if who == "ego" and m.slot == "distance" and actors:
-                    who = actors[-1]  # a gap said of the ego is the gap to the road user named last
+                    who = _gap_holder(actors)  # a gap said of the ego is the gap to the road user named last
                 if isinstance(clause_subject, _Actor) and _overtaken_coming(who, clause_subject, m):
                     _apply(m, who, r, link, added)  # (what it overtakes goes its way: towards the ego too)
                     who = clause_subject  # ("a lorry overtook a tractor and came towards us": the lorry)
@@ -2561,6 +2573,9 @@ def _read(text: str) -> Reading:
     junction = r.map_kind in ("crossroad", "roundabout")
     # (what the whole text says, read once for every road user's behaviours below)
     left_hand, across, signal = sides.drives_on_left(scanned, text), turn_across_side(text), junctions.signal_said(said)
+    for a in actors:  # (of the distances said of it, the one where it is put in the scene)
+        if (start := start_gap.start_of(a.gaps_said, scanned, a.named_end)) is not None:
+            a.distance_m, a.end_gap = start[1], start[3]
     for a, slot, value in said_of:
         a.speed_mps, a.distance_m = (value, a.distance_m) if slot == "speed" else (a.speed_mps, value)
     for a in actors:
@@ -3840,6 +3855,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "distance":
             a.distance_m = m.value
             a.end_gap = sides.gap_where_it_ends(a.behaviours)
+            a.gaps_said.append((m.start, m.value, m.prev, a.end_gap))
         elif m.slot == "relation" and m.value in ("ahead", "behind") and m.next_ in ("it", "him", "her", "them"):
             a.said.add("near_other")  # "a car behind it swerves": behind another road user, not the ego
             if m.value == "behind":
