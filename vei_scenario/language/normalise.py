@@ -627,6 +627,55 @@ def _plain_letter(c: str) -> str:
     return base if base and base.isascii() else c
 
 
+#: Things that lie on a road and are no road user: what falls or is shed from loads, what a storm brings
+#: down, what roadworks put out, the generic words for them ("debris", "an object", "lost cargo").
+_THINGS = (
+    r"debris|rubble|junk|litter|pallets?|mattress(?:es)?|obstacles?|objects?|items?|boxes|box|crates?|cartons?|"
+    r"parcels?|sacks?|bags?|bales?|barrels?|drums?|tyres?|tires?|rocks?|boulders?|stones?|bricks?|"
+    r"logs?|branch(?:es)?|trees?|planks?|timber|sheets?|plasterboard|boards?|pipes?|poles?|ladders?|"
+    r"furniture|sofas?|couch(?:es)?|chairs?|fridges?|tarpaulins?|tarps?|scaffold(?:ing| poles?| boards?)?|"
+    r"cones?|barriers?|signs?|load|cargo"
+)
+#: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
+#: there or what it is made of, and what a bracket says it is ("a static obstacle (lost cargo)").
+_THING = (
+    r"(?:an? |the |some |one |two |three |several |a few |a couple of )?"
+    r"(?:(?:pile|load|piece|pieces|bits|heap|line|row|set|stack|couple|number|quantity|lot|bunch) of )?"
+    r"(?:(?:fallen|dropped|shed|lost|loose|spilt|spilled|stray|static|stationary|abandoned|large|big|huge|small|"
+    r"spare|wooden|metal|plastic|steel|broken|roadworks?|road closed|traffic) )*"
+    rf"(?:[a-z]+ (?=(?:{_THINGS})\b))?(?:{_THINGS})\b(?: \([^()]{{0,60}}\))?"
+    rf"(?: and (?:an? |the |some )?(?:[a-z]+ )?(?:{_THINGS})\b)?"
+)
+#: How a thing lies somewhere: a verb of lying or of having fallen there ("left", not "left of").
+_LIES = (
+    r"lying|lay|laying|sitting|sat|left(?! (?:of|side|hand|lane)\b)|standing|stood|stuck|fallen|dropped|strewn|"
+    r"scattered|spilt|spilled|blocking"
+)
+#: Where a thing lies when no verb says it: in, on or across a lane or the carriageway, in the middle of
+#: the road or across it ("a sign on the road" may be painted on it or stand by it).
+_IN_A_LANE = (
+    r"(?:all )?(?:(?:in|on|across|over) (?:the middle of )?(?:the |my |our |his |her |its |their |ego |"
+    r"the ego 's |the ego's )?(?:[a-z0-9-]+ ){0,2}(?:lane|lanes|carriageway)|in the middle of the road|"
+    r"(?:across|over) the road)\b"
+)
+#: A thing lying in a lane (by a verb of lying, or by being in a lane), or one a vehicle reveals by moving
+#: away ("revealing a mattress"): only a thing said to lie there stands in a lane ("a tree on the left" does
+#: not, and neither does "a load of bricks on its trailer").
+_THING_IN_THE_LANE = re.compile(
+    rf"\b(?:(revealing|reveals|revealed|reveal|exposing|exposes|exposed|expose|uncovering|uncovered) )?"
+    rf"{_THING}(?(1)|(?= (?:{_LIES}|(?:is |are |was |were |now |still )?{_IN_A_LANE})))"
+)
+
+#: Where a thing lying in a lane came from ("boxes fallen from some truck", "having apparently fallen from an
+#: unidentified vehicle"): a vehicle gone by, which the scene does not have.
+_FALLEN_FROM = re.compile(
+    r"\b(a stationary obstacle\b[^.;!?]{0,80}?)(?:,? (?:having |which had |that had |that )?(?:[a-z]+ly )?"
+    r"(?:fallen|fell|dropped|been dropped|been shed|been lost|come|came|blown|blew) (?:off|from|out of) "
+    r"(?:the back of )?(?:an? |the |some |one |another )?(?:[a-z-]+ )?"
+    r"(?:lorry|lorries|truck|trucks|van|trailer|vehicle|car|pickup|ute|hgv|lgv|wagon|tipper|load)s?\b)"
+)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -745,16 +794,12 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"\1 lane\2",
         text,
     )
-    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a fallen mattress
-    # lying in the left lane"): a standing obstacle, which a vehicle ahead may swerve round and reveal
-    text = re.sub(
-        r"\b(?:an? |the |some )?(?:(?:pile|load|piece|bits|heap) of )?(?:fallen |dropped |shed |lost |large |big )*"
-        r"(debris|pallets?|mattress(?:es)?|obstacles?|boxes|box|tyres?|tires?|rocks?|fallen tree|branch(?:es)?|"
-        r"traffic cones?|cones?|ladders?|objects?|load|cargo)\b(?= (?:lying|left|sitting|standing|in|on|blocking)\b)",
-        "a stationary obstacle",
-        text,
-    )
-    text = re.sub(r"\b(a stationary obstacle) (?:lying|left|sitting)\b", r"\1", text)
+    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a sofa lying across
+    # lane one", "a static obstacle (lost cargo) in the ego lane", "revealing a mattress"): a standing
+    # obstacle, which a vehicle ahead may swerve round and reveal
+    text = _THING_IN_THE_LANE.sub(lambda m: f"{m[1] or ''} a stationary obstacle".lstrip(), text)
+    text = _FALLEN_FROM.sub(r"\1", text)  # ("fallen from a lorry": the lorry it came from is no road user here)
+    text = re.sub(rf"\b(a stationary obstacle) (?:{_LIES})\b", r"\1", text)
     # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
     text = re.sub(
         r"\b(?:is |was )?(?:drift\w*|change|changed|changing|wander\w*|veer\w*|slide|slides|slid|sliding|swing\w*|"
