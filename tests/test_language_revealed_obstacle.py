@@ -36,6 +36,9 @@ def _lead(text: str):
         # an Indian English voice note: "exposing" what lay there
         "Sir I was going behind one lorry at 60 on the expressway, two lanes, the lorry suddenly shifted to the "
         "right lane exposing a wooden crate on the road.",
+        # a Singaporean forum post: two things said together
+        "Following one lorry at 70 on the expressway, two lanes, then the lorry suddenly changed lanes and got "
+        "a line of cones and a roadworks sign in my lane, almost kena.",
     ],
 )
 def test_a_lead_moving_out_to_show_a_thing_lying_in_the_lane_is_a_cut_out(text):

@@ -638,14 +638,15 @@ _THINGS = (
 )
 #: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
 #: there or what it is made of, and what a bracket says it is ("a static obstacle (lost cargo)").
-_THING = (
+_ONE_THING = (
     r"(?:an? |the |some |one |two |three |several |a few |a couple of )?"
     r"(?:(?:pile|load|piece|pieces|bits|heap|line|row|set|stack|couple|number|quantity|lot|bunch) of )?"
     r"(?:(?:fallen|dropped|shed|lost|loose|spilt|spilled|stray|static|stationary|abandoned|large|big|huge|small|"
     r"spare|wooden|metal|plastic|steel|broken|roadworks?|road closed|traffic) )*"
     rf"(?:[a-z]+ (?=(?:{_THINGS})\b))?(?:{_THINGS})\b(?: \([^()]{{0,60}}\))?"
-    rf"(?: and (?:an? |the |some )?(?:[a-z]+ )?(?:{_THINGS})\b)?"
 )
+#: One such noun phrase, or two joined ("a line of cones and a road closed sign"): they lie there together.
+_THING = rf"{_ONE_THING}(?: and {_ONE_THING})?"
 #: How a thing lies somewhere: a verb of lying or of having fallen there ("left", not "left of").
 _LIES = (
     r"lying|lay|laying|sitting|sat|left(?! (?:of|side|hand|lane)\b)|standing|stood|stuck|fallen|dropped|strewn|"
