@@ -636,6 +636,7 @@ _THINGS = (
     r"furniture|sofas?|couch(?:es)?|chairs?|fridges?|tarpaulins?|tarps?|scaffold(?:ing| poles?| boards?)?|"
     r"cones?|barriers?|signs?|load|cargo"
 )
+_A_THING = re.compile(rf"\b(?:{_THINGS})\b")
 #: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
 #: there or what it is made of, and what a bracket says it is ("a static obstacle (lost cargo)").
 _ONE_THING = (
@@ -798,7 +799,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a sofa lying across
     # lane one", "a static obstacle (lost cargo) in the ego lane", "revealing a mattress"): a standing
     # obstacle, which a vehicle ahead may swerve round and reveal
-    text = _THING_IN_THE_LANE.sub(lambda m: f"{m[1] or ''} a stationary obstacle".lstrip(), text)
+    if _A_THING.search(text):  # (one quick pass first: most descriptions name no such thing)
+        text = _THING_IN_THE_LANE.sub(lambda m: f"{m[1] or ''} a stationary obstacle".lstrip(), text)
     text = _FALLEN_FROM.sub(r"\1", text)  # ("fallen from a lorry": the lorry it came from is no road user here)
     text = re.sub(rf"\b(a stationary obstacle) (?:{_LIES})\b", r"\1", text)
     # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
