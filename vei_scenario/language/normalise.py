@@ -638,13 +638,17 @@ _THINGS = (
 )
 _A_THING = re.compile(rf"\b(?:{_THINGS})\b")
 #: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
-#: there or what it is made of, and what a bracket says it is ("a static obstacle (lost cargo)").
+#: there or what it is made of, a noun before it after those ("a quantity of plasterboard sheets"; never a
+#: bare word before it: "to avoid debris"), and what a bracket says it is ("a static obstacle (lost cargo)").
+_ARTICLE = r"(?:an?|the|some|one|two|three|several|a few|a couple of) "
+_MEASURE = r"(?:pile|load|piece|pieces|bits|heap|line|row|set|stack|couple|number|quantity|lot|bunch) of "
+_HOW = (
+    r"(?:fallen|dropped|shed|lost|loose|spilt|spilled|stray|static|stationary|abandoned|large|big|huge|small|"
+    r"spare|wooden|metal|plastic|steel|broken|roadworks?|road closed|traffic) "
+)
 _ONE_THING = (
-    r"(?:an? |the |some |one |two |three |several |a few |a couple of )?"
-    r"(?:(?:pile|load|piece|pieces|bits|heap|line|row|set|stack|couple|number|quantity|lot|bunch) of )?"
-    r"(?:(?:fallen|dropped|shed|lost|loose|spilt|spilled|stray|static|stationary|abandoned|large|big|huge|small|"
-    r"spare|wooden|metal|plastic|steel|broken|roadworks?|road closed|traffic) )*"
-    rf"(?:[a-z]+ (?=(?:{_THINGS})\b))?(?:{_THINGS})\b(?: \([^()]{{0,60}}\))?"
+    rf"(?:(?:{_ARTICLE}(?:{_MEASURE})?|{_MEASURE})(?:{_HOW})*(?:[a-z]+ (?=(?:{_THINGS})\b))?|(?:{_HOW})+)?"
+    rf"(?:{_THINGS})\b(?: \([^()]{{0,60}}\))?"
 )
 #: One such noun phrase, or two joined ("a line of cones and a road closed sign"): they lie there together.
 _THING = rf"{_ONE_THING}(?: and {_ONE_THING})?"
@@ -653,12 +657,11 @@ _LIES = (
     r"lying|lay|laying|sitting|sat|left(?! (?:of|side|hand|lane)\b)|standing|stood|stuck|fallen|dropped|strewn|"
     r"scattered|spilt|spilled|blocking"
 )
-#: Where a thing lies when no verb says it: in, on or across a lane or the carriageway, in the middle of
-#: the road or across it ("a sign on the road" may be painted on it or stand by it).
+#: Where a thing lies when no verb says it: in, on or across a lane, the carriageway or the road ("a tree on
+#: the left" is by the road).
 _IN_A_LANE = (
-    r"(?:all )?(?:(?:in|on|across|over) (?:the middle of )?(?:the |my |our |his |her |its |their |ego |"
-    r"the ego 's |the ego's )?(?:[a-z0-9-]+ ){0,2}(?:lane|lanes|carriageway)|in the middle of the road|"
-    r"(?:across|over) the road)\b"
+    r"(?:all )?(?:in|on|across|over) (?:the middle of )?(?:(?:the |my |our |his |her |its |their |ego |"
+    r"the ego 's |the ego's )?(?:[a-z0-9-]+ ){0,2}(?:lane|lanes|carriageway)|(?:the )?(?:road|roadway))\b"
 )
 #: A thing lying in a lane (by a verb of lying, or by being in a lane), or one a vehicle reveals by moving
 #: away ("revealing a mattress"): only a thing said to lie there stands in a lane ("a tree on the left" does
