@@ -31,7 +31,7 @@ def _lead(text: str):
         "doing 100 behind a ute on the highway, two lanes, he swung out to the right and theres a roadworks "
         "barrier sitting in my lane",
         # a learner's English: the thing "fallen from" a lorry after it
-        "Highway 3 lanes, I was in 2nd lane at 90 km/h following a SUV. Suddenly the SUV changed lanes "
+        "Highway 3 lanes, I was in 2nd lane at 90 km/h following a SUV. Suddenly the SUV changed to 3rd lane "
         "and there were bricks fallen from some truck in my lane.",
         # an Indian English voice note: "exposing" what lay there
         "Sir I was going behind one lorry at 60 on the expressway, two lanes, the lorry suddenly shifted to the "
@@ -70,3 +70,21 @@ def test_a_road_user_shown_by_the_lead_stays_a_road_user():
 def test_a_thing_by_the_road_is_no_obstacle():
     r = read("A tree on the left and a sign on the right; a van ahead moves into the right lane at 50 mph.")
     assert [a.kind for a in r.actors] == ["van"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was at 90 km/h following a SUV. Suddenly the SUV changed to lane 3.",
+        "Following a bus at 40 km/h, the bus changes over to the right lane.",
+        "Behind a taxi at 50 km/h when the taxi changed into the left lane.",
+        "Following a van at 60 km/h, the van is changing to the 2nd lane.",
+    ],
+)
+def test_changing_to_a_lane_named_is_a_lane_change(text):
+    assert [b[0] for b in read(text).actors[0].behaviours] == ["change_lane"]
+
+
+def test_a_light_changing_to_a_colour_is_no_lane_change():
+    r = read("The light changed to red and a van ahead of me stopped.")
+    assert [b[0] for b in r.actors[0].behaviours] == ["stop"]

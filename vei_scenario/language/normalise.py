@@ -806,6 +806,16 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         text = _THING_IN_THE_LANE.sub(lambda m: f"{m[1] or ''} a stationary obstacle".lstrip(), text)
     text = _FALLEN_FROM.sub(r"\1", text)  # ("fallen from a lorry": the lorry it came from is no road user here)
     text = re.sub(rf"\b(a stationary obstacle) (?:{_LIES})\b", r"\1", text)
+    # "changed to 3rd lane", "changes over to lane 2", "change into the left lane": a move to the lane named
+    # (a light that "changed to red" names no lane)
+    text = re.sub(
+        r"\bchang(e|es|ed|ing)( over)? ((?:in)?to) "
+        r"(?=(?:the |my |our |its |his |her )?(?:lane \d|\d(?:st|nd|rd|th) lane|"
+        r"(?:first|second|third|fourth|left|right|left-hand|right-hand|middle|centre|center|inside|outside|"
+        r"nearside|offside|next|other|adjacent|fast|slow|overtaking|passing) lane)\b)",
+        lambda m: {"e": "move", "es": "moves", "ed": "moved", "ing": "moving"}[m[1]] + f"{m[2] or ''} {m[3]} ",
+        text,
+    )
     # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
     text = re.sub(
         r"\b(?:is |was )?(?:drift\w*|change|changed|changing|wander\w*|veer\w*|slide|slides|slid|sliding|swing\w*|"
