@@ -38,7 +38,7 @@ def _lead(text: str):
         "right lane exposing a wooden crate on the road.",
         # a Singaporean forum post: two things said together
         "Following one lorry at 70 on the expressway, two lanes, then the lorry suddenly changed lanes and got "
-        "a line of cones and a roadworks sign in my lane, almost kena.",
+        "a line of cones and a roadworks barrier in my lane, almost kena.",
     ],
 )
 def test_a_lead_moving_out_to_show_a_thing_lying_in_the_lane_is_a_cut_out(text):
@@ -88,3 +88,8 @@ def test_changing_to_a_lane_named_is_a_lane_change(text):
 def test_a_light_changing_to_a_colour_is_no_lane_change():
     r = read("The light changed to red and a van ahead of me stopped.")
     assert [b[0] for b in r.actors[0].behaviours] == ["stop"]
+
+
+def test_no_signs_on_the_road_is_no_obstacle():
+    r = read("There were no signs on the road and a van ahead braked hard.")
+    assert [a.kind for a in r.actors] == ["van"]

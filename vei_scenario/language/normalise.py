@@ -628,13 +628,15 @@ def _plain_letter(c: str) -> str:
 
 
 #: Things that lie on a road and are no road user: what falls or is shed from loads, what a storm brings
-#: down, what roadworks put out, the generic words for them ("debris", "an object", "lost cargo").
+#: down, what roadworks put out, the generic words for them ("debris", "an object", "lost cargo"). Not what
+#: people carry (bags, parcels: "a woman with shopping bags in the road" is a walker) nor signs ("no signs
+#: on the road" says none stands there).
 _THINGS = (
-    r"debris|rubble|junk|litter|pallets?|mattress(?:es)?|obstacles?|objects?|items?|boxes|box|crates?|cartons?|"
-    r"parcels?|sacks?|bags?|bales?|barrels?|drums?|tyres?|tires?|rocks?|boulders?|stones?|bricks?|"
+    r"debris|rubble|junk|pallets?|mattress(?:es)?|obstacles?|objects?|items?|boxes|box|crates?|cartons?|"
+    r"bales?|barrels?|drums?|tyres?|tires?|rocks?|boulders?|stones?|bricks?|"
     r"logs?|branch(?:es)?|trees?|planks?|timber|sheets?|plasterboard|boards?|pipes?|poles?|ladders?|"
     r"furniture|sofas?|couch(?:es)?|chairs?|fridges?|tarpaulins?|tarps?|scaffold(?:ing| poles?| boards?)?|"
-    r"cones?|barriers?|signs?|load|cargo"
+    r"cones?|barriers?|load|cargo"
 )
 _A_THING = re.compile(rf"\b(?:{_THINGS})\b")
 #: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
