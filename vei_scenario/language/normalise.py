@@ -655,6 +655,62 @@ def _plain_letter(c: str) -> str:
     return base if base and base.isascii() else c
 
 
+#: Things that lie on a road and are no road user: what falls or is shed from loads, what a storm brings
+#: down, what roadworks put out, the generic words for them ("debris", "an object", "lost cargo"). Not what
+#: people carry (bags, parcels: "a woman with shopping bags in the road" is a walker) nor signs ("no signs
+#: on the road" says none stands there).
+_THINGS = (
+    r"debris|rubble|junk|pallets?|mattress(?:es)?|obstacles?|objects?|items?|boxes|box|crates?|cartons?|"
+    r"bales?|barrels?|drums?|tyres?|tires?|rocks?|boulders?|stones?|bricks?|"
+    r"logs?|branch(?:es)?|trees?|planks?|timber|sheets?|plasterboard|boards?|pipes?|poles?|ladders?|"
+    r"furniture|sofas?|couch(?:es)?|chairs?|fridges?|tarpaulins?|tarps?|scaffold(?:ing| poles?| boards?)?|"
+    r"cones?|barriers?|load|cargo"
+)
+_A_THING = re.compile(rf"\b(?:{_THINGS})\b")
+#: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
+#: there or what it is made of, a noun before it after those ("a quantity of plasterboard sheets"; never a
+#: bare word before it: "to avoid debris"), and what a bracket says it is ("a static obstacle (lost cargo)").
+_ARTICLE = r"(?:an?|the|some|one|two|three|several|a few|a couple of) "
+_MEASURE = r"(?:pile|load|piece|pieces|bits|heap|line|row|set|stack|couple|number|quantity|lot|bunch) of "
+_HOW = (
+    r"(?:fallen|dropped|shed|lost|loose|spilt|spilled|stray|static|stationary|abandoned|large|big|huge|small|"
+    r"spare|wooden|metal|plastic|steel|broken|roadworks?|road closed|traffic) "
+)
+_ONE_THING = (
+    rf"(?:(?:{_ARTICLE}(?:{_MEASURE})?|{_MEASURE})(?:{_HOW})*(?:[a-z]+ (?=(?:{_THINGS})\b))?|(?:{_HOW})+)?"
+    rf"(?:{_THINGS})\b(?: \([^()]{{0,60}}\))?"
+)
+#: One such noun phrase, or two joined ("a line of cones and a road closed sign"): they lie there together.
+_THING = rf"{_ONE_THING}(?: and {_ONE_THING})?"
+#: How a thing lies somewhere: a verb of lying or of having fallen there ("left", not "left of").
+_LIES = (
+    r"lying|lay|laying|sitting|sat|left(?! (?:of|side|hand|lane)\b)|standing|stood|stuck|fallen|dropped|strewn|"
+    r"scattered|spilt|spilled|blocking"
+)
+#: Where a thing lies when no verb says it: in, on or across a lane, the carriageway or the road ("a tree on
+#: the left" is by the road).
+_IN_A_LANE = (
+    r"(?:all )?(?:in|on|across|over) (?:the middle of )?(?:(?:the |my |our |his |her |its |their |ego |"
+    r"the ego 's |the ego's )?(?:[a-z0-9-]+ ){0,2}(?:lane|lanes|carriageway)|(?:the )?(?:road|roadway))\b"
+)
+#: A thing lying in a lane (by a verb of lying, or by being in a lane), or one a vehicle reveals by moving
+#: away ("revealing a mattress"): only a thing said to lie there stands in a lane ("a tree on the left" does
+#: not, and neither does "a load of bricks on its trailer").
+_THING_IN_THE_LANE = re.compile(
+    rf"\b(?:(revealing|reveals|revealed|reveal|exposing|exposes|exposed|expose|uncovering|uncovered) )?"
+    rf"{_THING}(?(1)|(?= (?:{_LIES}|(?:is |are |was |were |now |still )?{_IN_A_LANE})))"
+)
+
+#: Where a thing lying in a lane came from ("boxes fallen from some truck", "having apparently fallen from an
+#: unidentified vehicle"): a vehicle gone by, which the scene does not have.
+_FALLEN_FROM = re.compile(
+    r"\b(a stationary obstacle\b[^.;!?]{0,80}?)(?:,? (?:having |which had |that had |that )?(?:[a-z]+ly )?"
+    r"(?:fallen|fell|dropped|been dropped|been shed|been lost|come|came|blown|blew) (?:off|from|out of) "
+    r"(?:the back of )?(?:an? |the |some |one |another )?(?:[a-z-]+ )?"
+    r"(?:lorry|lorries|truck|trucks|van|trailer|vehicle|car|pickup|ute|hgv|lgv|wagon|tipper|load)s?\b)"
+)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -774,16 +830,23 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
         r"\1 lane\2",
         text,
     )
-    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a fallen mattress
-    # lying in the left lane"): a standing obstacle, which a vehicle ahead may swerve round and reveal
+    # something lying in the lane ("debris lying in our lane", "a pile of fallen pallets", "a sofa lying across
+    # lane one", "a static obstacle (lost cargo) in the ego lane", "revealing a mattress"): a standing
+    # obstacle, which a vehicle ahead may swerve round and reveal
+    if _A_THING.search(text):  # (one quick pass first: most descriptions name no such thing)
+        text = _THING_IN_THE_LANE.sub(lambda m: f"{m[1] or ''} a stationary obstacle".lstrip(), text)
+    text = _FALLEN_FROM.sub(r"\1", text)  # ("fallen from a lorry": the lorry it came from is no road user here)
+    text = re.sub(rf"\b(a stationary obstacle) (?:{_LIES})\b", r"\1", text)
+    # "changed to 3rd lane", "changes over to lane 2", "change into the left lane": a move to the lane named
+    # (a light that "changed to red" names no lane)
     text = re.sub(
-        r"\b(?:an? |the |some )?(?:(?:pile|load|piece|bits|heap) of )?(?:fallen |dropped |shed |lost |large |big )*"
-        r"(debris|pallets?|mattress(?:es)?|obstacles?|boxes|box|tyres?|tires?|rocks?|fallen tree|branch(?:es)?|"
-        r"traffic cones?|cones?|ladders?|objects?|load|cargo)\b(?= (?:lying|left|sitting|standing|in|on|blocking)\b)",
-        "a stationary obstacle",
+        r"\bchang(e|es|ed|ing)( over)? ((?:in)?to) "
+        r"(?=(?:the |my |our |its |his |her )?(?:lane \d|\d(?:st|nd|rd|th) lane|"
+        r"(?:first|second|third|fourth|left|right|left-hand|right-hand|middle|centre|center|inside|outside|"
+        r"nearside|offside|next|other|adjacent|fast|slow|overtaking|passing) lane)\b)",
+        lambda m: {"e": "move", "es": "moves", "ed": "moved", "ing": "moving"}[m[1]] + f"{m[2] or ''} {m[3]} ",
         text,
     )
-    text = re.sub(r"\b(a stationary obstacle) (?:lying|left|sitting)\b", r"\1", text)
     # "drifts over into my lane", "is change to my lane": a move into the ego's lane, whatever verb of motion says it
     text = re.sub(
         r"\b(?:is |was )?(?:drift\w*|change|changed|changing|wander\w*|veer\w*|slide|slides|slid|sliding|swing\w*|"
