@@ -42,6 +42,7 @@ from vei_scenario.language import (
     follower_start,
     from_cover,
     generic_ego,
+    held_pass,
     junctions,
     kerb_ride,
     kind_in_general,
@@ -2378,6 +2379,8 @@ def _read(text: str) -> Reading:
                 name, cfg, scanned, start, end, lambda w, kind=a.kind: _single_kind(w) == kind
             ):
                 cfg[crossing_reaction.MARK] = 1.0  # (dropped after a crossing, once its name is final)
+            if start is not None and held_pass.said_free(name, scanned, start, end, a.kind, _single_kind):
+                cfg[held_pass.MARK] = held_pass.mark(name, scanned, end, _single_kind)  # (maybe the ego's)
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2478,6 +2481,13 @@ def _read(text: str) -> Reading:
             not a.behaviours and not a.stationary and not a.wrong_way and a.unknown
         ):  # only a verb the reader has no word for: it goes on
             a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
+    for a in actors:  # ("a cyclist along the kerb; she held back, then overtook": the ego held back and passed)
+        behind = a.relation == "behind" or "behind" in a.said
+        a.behaviours, passed, held_behind = held_pass.egos_hold_and_pass(a.behaviours, behind)
+        a.passed = a.passed or passed
+        if held_behind:  # ("held back behind, then overtook": behind is where the ego held back)
+            a.said.discard("behind")
+            a.relation = None if a.relation == "behind" else a.relation
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
