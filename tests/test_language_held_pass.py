@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 
+from tests.reading_of import ego_kph
 from vei_scenario.language import held_pass
 from vei_scenario.language.reader import read
 
@@ -44,6 +45,7 @@ def test_the_egos_hold_and_pass_leave_the_walker_or_rider_going_along(text: str)
         # its own noun is the subject: the writer said whose the verbs are
         ("A cyclist was riding along the kerb. The cyclist slowed down, then the cyclist overtook.", None),
         ("A cyclist riding along the kerb slowed and then overtook.", None),
+        ("Two cyclists were riding along the kerb; they slowed and then overtook.", None),
         # coming up from behind, it can slow and then pass the ego
         ("An e-scooter came up behind us, slowed, then overtook.", ["change_speed", "overtake"]),
     ],
@@ -75,3 +77,22 @@ def test_a_motor_vehicle_that_holds_back_then_passes_keeps_its_overtake() -> Non
 )
 def test_whether_a_verb_of_passing_has_an_object(after: list[str], has: bool) -> None:
     assert held_pass._has_object(after, lambda w: "car" if w == "van" else None) is has
+
+
+@pytest.mark.parametrize(
+    ("text", "ego"),
+    [
+        ("Jogger along the left edge. Held back at 15 mph, then went past once clear.", 24.1),
+        ("Cyclist on the nearside kerb ahead. Slowed, then overtook when clear at roughly 30 km/h.", 30.0),
+    ],
+)
+def test_a_speed_said_with_the_egos_hold_and_pass_is_the_egos(text: str, ego: float) -> None:
+    """A speed said from the holding back to the end of the pass's sentence is the ego's."""
+    assert ego_kph(text) == ego
+    assert read(text).actors[0].speed_mps is None
+
+
+def test_the_riders_own_speed_said_before_stays_its_own() -> None:
+    text = "A cyclist riding along the kerb at 15 km/h. She held back, then overtook."
+    assert ego_kph(text) is None
+    assert round(read(text).actors[0].speed_mps * 3.6) == 15

@@ -27,15 +27,18 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from vei_scenario.language.clauses import sentence_start
+from vei_scenario.language.clauses import SENTENCE_END, sentence_start
 from vei_scenario.language.discourse import DETERMINERS, VULNERABLE
 
 #: The mark a holding back or an overtake said free of the road user carries to the pass over the reading.
 MARK = "_held_pass_free"
 #: Behaviours of holding back behind someone: giving way, slowing, stopping, following.
 HOLDS = frozenset(("give_way", "change_speed", "stop", "follow_vehicle"))
-#: Pronouns that stand as a subject and name someone other than a road user said as a noun before.
-_OTHER_SUBJECTS = frozenset(("i", "we", "you", "he", "she", "they"))
+#: Pronouns that stand as a subject and name a person: the narrator, the one addressed, or one driver
+#: ("she held back"). "They" is left out: it says again a pair or a group of riders as often as anyone.
+_OTHER_SUBJECTS = frozenset(("i", "we", "you", "he", "she"))
+#: Pronouns that may say the road user again: "it" (a bike, a scooter), "they" (a pair of riders).
+_MAYBE_ITSELF = frozenset(("it", "they"))
 #: Words that say a verb of passing has an object: a determiner, an object pronoun, the ego.
 _OBJECT_OPENERS = DETERMINERS | frozenset(("me", "us", "him", "her", "them", "it", "you", "ego", "everyone"))
 #: Particles between a verb of passing and its object ("went past her", "got round them").
@@ -52,11 +55,12 @@ def _has_object(after: list[str], kind_of: Callable[[str], str | None]) -> bool:
 def _someone_else_subject(before: list[str], kind_of: Callable[[str], str | None]) -> bool:
     """Whether the nearest naming word before a verb in its sentence (``before``) is someone other than
     a walker or rider: a motor vehicle or the ego by its noun, or a subject pronoun; with none, the
-    subject is left out, and so is no walker's or rider's noun either. "It" may be the road user."""
+    subject is left out, and so is no walker's or rider's noun either. "It" or "they" may be the road
+    user itself."""
     for word in reversed(before):
         if word in _OTHER_SUBJECTS:
             return True
-        if word == "it":
+        if word in _MAYBE_ITSELF:
             return False
         kind = kind_of(word)
         if kind is not None:
@@ -91,30 +95,51 @@ def mark(name: str, tokens: list[str], end: int, kind_of: Callable[[str], str | 
     return BEHIND if name in HOLDS and alone else 1.0
 
 
+#: Where a marked behaviour was said: (start, end) of its words in the scanned tokens.
+SPAN = "_held_pass_span"
+
+
 def _unmarked(behaviour: tuple) -> tuple:
-    """``behaviour`` (name, cfg, criticality, link) with the mark taken off its parameters."""
+    """``behaviour`` (name, cfg, criticality, link) with the mark and its span taken off its parameters."""
     name, cfg, crit, link = behaviour
-    return (name, {k: v for k, v in cfg.items() if k != MARK}, crit, link)
+    return (name, {k: v for k, v in cfg.items() if k not in (MARK, SPAN)}, crit, link)
 
 
-def egos_hold_and_pass(behaviours: list, behind: bool) -> tuple[list, bool, bool]:
+def said_within(tokens: list[str], span: tuple[int, int] | None, at: int | None) -> bool:
+    """Whether token ``at`` lies in ``span`` (from the ego's first holding back to its pass) or after
+    it in the pass's sentence ("held back at about 20 mph", "overtook when clear at ~20mph"): a speed
+    said there is the ego's, whose the holding back and the pass are."""
+    if span is None or at is None or at < span[0]:
+        return False
+    end = span[1]
+    while end < len(tokens) and tokens[end] not in SENTENCE_END:
+        end += 1
+    return at < end
+
+
+def egos_hold_and_pass(behaviours: list, behind: bool) -> tuple[list, tuple[int, int] | None, bool]:
     """``behaviours`` (name, cfg, criticality, link) of a road user without the ego's holding back and
     passing (marked holds right before a marked overtake: see the module's docstring), marks taken
-    off; whether such a pass was found (the road user is then one the ego passes); and whether one of
-    those holds was said "behind" with no one after it (the road user's "behind" is then the ego's
-    place). ``behind``: the road user is said behind the ego; then nothing is taken, unless "behind"
-    was said only by such a hold."""
+    off; where such a hold and pass were said (from the first hold's start to the pass's end, or None
+    where none was found: the road user is then one the ego passes); and whether one of those holds
+    was said "behind" with no one after it (the road user's "behind" is then the ego's place).
+    ``behind``: the road user is said behind the ego; then nothing is taken, unless "behind" was said
+    only by such a hold."""
     out: list = []
-    passed = held_behind = False
+    span: tuple[int, int] | None = None
+    held_behind = False
     for b in behaviours:
         run = _held_run(out)
         by_hold = any(x[1].get(MARK) == BEHIND for x in run)
         if b[0] == "overtake" and b[1].get(MARK) and run and (by_hold or not behind):
             del out[len(out) - len(run) :]
-            passed, held_behind = True, held_behind or by_hold
+            first, last = run[0][1].get(SPAN), b[1].get(SPAN)
+            if first and last:
+                span = (min(first[0], span[0]) if span else first[0], last[1])
+            held_behind = held_behind or by_hold
             continue
         out.append(b)
-    return [_unmarked(b) for b in out], passed, held_behind
+    return [_unmarked(b) for b in out], span, held_behind
 
 
 def _held_run(behaviours: list) -> list:
