@@ -42,6 +42,7 @@ from vei_scenario.language import (
     follower_start,
     from_cover,
     generic_ego,
+    held_pass,
     junctions,
     kerb_crossing,
     kerb_ride,
@@ -307,6 +308,7 @@ class _Actor:
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
     own_lane: bool = False  # in a lane of its own beside the ego's ("in the cycle lane on our right")
     from_cover: bool = False  # said to come out from behind or between something ("from behind a bus")
+    speed_at: int | None = None  # where its speed was said in the scanned words (None: not said there)
 
 
 #: Euro NCAP's names of its test scenarios ("Car-to-Car Rear stationary", "Car-to-Pedestrian Nearside
@@ -2421,6 +2423,9 @@ def _read(text: str) -> Reading:
                 name, cfg, scanned, start, end, lambda w, kind=a.kind: _single_kind(w) == kind
             ):
                 cfg[crossing_reaction.MARK] = 1.0  # (dropped after a crossing, once its name is final)
+            if start is not None and held_pass.said_free(name, scanned, start, end, a.kind, _single_kind):
+                cfg[held_pass.MARK] = held_pass.mark(name, scanned, end, _single_kind)  # (maybe the ego's)
+                cfg[held_pass.SPAN] = (start, end)
             if name == "sudden_stop" and len(words.split()) == 1 and "brake" in forms(words):
                 cfg["_plain_brake"] = 1.0  # ("brakes": how hard, a stop said after it tells)
             a.goes_on = a.goes_on or bool(cfg.pop("_denied", None))
@@ -2521,6 +2526,16 @@ def _read(text: str) -> Reading:
             not a.behaviours and not a.stationary and not a.wrong_way and a.unknown
         ):  # only a verb the reader has no word for: it goes on
             a.behaviours.append((motion.default_behaviour(a.kind), {}, None, "sequence"))
+    for a in actors:  # ("a cyclist along the kerb; she held back, then overtook": the ego held back and passed)
+        behind = a.relation == "behind" or "behind" in a.said
+        a.behaviours, span, held_behind = held_pass.egos_hold_and_pass(a.behaviours, behind)
+        a.passed = a.passed or span is not None
+        if held_pass.said_within(scanned, span, a.speed_at) and a.speed_mps and a.speed_mps > 0:
+            r.ego_speed_mps = r.ego_speed_mps or a.speed_mps  # ("she held back at about 20 mph": the ego's)
+            a.speed_mps = None
+        if held_behind:  # ("held back behind, then overtook": behind is where the ego held back)
+            a.said.discard("behind")
+            a.relation = None if a.relation == "behind" else a.relation
     for a in actors:  # "turns out of the junction": it comes from a side road
         for k, (_name, cfg, c, lk) in enumerate(a.behaviours):
             if cfg.pop("from_side_road", None):
@@ -3839,7 +3854,7 @@ def _apply(m, who, r, link, added) -> None:
         elif m.slot == "unknown_verb":
             a.unknown.append(m.words)
         elif m.slot == "speed":
-            a.speed_mps = m.value
+            a.speed_mps, a.speed_at = m.value, m.start
         elif m.slot == "speed_to":
             a.speed_to_mps = m.value
         elif m.slot == "accel":
