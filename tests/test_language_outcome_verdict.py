@@ -80,3 +80,18 @@ def test_a_contact_that_no_verdict_denies_stays_a_collision(text):
 )
 def test_the_other_denied_touching_the_ego_is_a_verdict(text):
     assert _intent(text) == "near_miss", outcome_cues(" ".join(_tokens(text)))
+
+
+# the scene named a near miss is a verdict too; many near misses, or one before a later contact, are not
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("Control: RTC on the bypass, all units avoid. Unit 12 here, just had a near miss at the lights, a car "
+         "pulled out and I braked hard.", "near_miss"),
+        ("There was a smash on the high road earlier. Mine was a close call: a moped cut across me.", "near_miss"),
+        ("A car hit me at the junction. Locals say there have been loads of near misses here.", "collision"),
+        ("After last week's close call, today a scooter actually hit my door.", "collision"),
+    ],
+)  # fmt: skip
+def test_a_near_miss_named_is_a_verdict_on_the_scene(text, intent):
+    assert _intent(text) == intent, outcome_cues(" ".join(_tokens(text)))

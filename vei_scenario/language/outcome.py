@@ -1699,7 +1699,7 @@ def _verdict_denial(words: list[str], i: int, doer: str | None) -> bool:
 
 def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> list[Cue]:
     """``cues`` with each contact said in a sentence before ``verdict`` (the last sentence whose verdict
-    denies contact) kept as ``overruled``: a writer who ends on "no contact" did not mean the earlier
+    denies contact or names the scene a near miss) kept as ``overruled``: a writer who ends on "no contact" did not mean the earlier
     word of contact of this scene ("a crash on the ring road, so we went the back way", "the road was
     rammed", "risk of vans striking cyclists"). A contact in the verdict's own sentence or after it
     stands ("clipped my mirror, but no contact with him"; "no contact with the first, the second hit me")."""
@@ -1723,7 +1723,7 @@ def outcome_cues(said: str) -> list[Cue]:
     raw = [ws for ws, _ in split(tokens, _BREAK_PUNCT - {","})]  # (its sentences with their conjunctions)
     said_in, cursor = -1, 0
     sentence_of: list[int] = []  # (the sentence each cue is said in)
-    verdict: int | None = None  # (the last sentence that denies contact as its verdict)
+    verdict: int | None = None  # (the last sentence that denies contact, or names a near miss, as its verdict)
     for n, clause in enumerate(clauses):
         words = clause.words
         ends_sentence = n + 1 == len(clauses) or clauses[n + 1].first_of_sentence
@@ -1770,7 +1770,10 @@ def outcome_cues(said: str) -> list[Cue]:
                 continue
             if _near_noun(words, i):
                 own = _after_contact_noun(words, i)  # ("no collision (near miss)": "no" is not said of it)
-                add("safe" if _denied_before(words[own:], i - own) else "near")  # ("no near miss": nothing close)
+                denied = _denied_before(words[own:], i - own)
+                add("safe" if denied else "near")  # ("no near miss": nothing close)
+                if not denied and words[i + 1 : i + 2] not in (["misses"], ["calls"], ["shaves"], ["escapes"]):
+                    verdict = said_in  # ("I've just had a near miss": it names the scene; "near misses" are many)
                 continue
             if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
                 add("safe")  # ("a collision-free pass")
