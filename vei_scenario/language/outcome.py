@@ -1699,9 +1699,10 @@ def _verdict_denial(words: list[str], i: int, doer: str | None) -> bool:
 
 def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> list[Cue]:
     """``cues`` with each contact said in a sentence before ``verdict`` (the last sentence whose verdict
-    denies contact or names the scene a near miss) kept as ``overruled``: a writer who ends on "no contact" did not mean the earlier
-    word of contact of this scene ("a crash on the ring road, so we went the back way", "the road was
-    rammed", "risk of vans striking cyclists"). A contact in the verdict's own sentence or after it
+    denies contact or names the scene a near miss) kept as ``overruled``: a writer who ends on "no
+    contact" did not mean the earlier word of contact of this scene ("a crash on the ring road, so we
+    went the back way", "the road was rammed", "risk of vans striking cyclists"). A contact in the
+    verdict's own sentence or after it
     stands ("clipped my mirror, but no contact with him"; "no contact with the first, the second hit me")."""
     if verdict is None:
         return cues
