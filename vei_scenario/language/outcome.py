@@ -1669,6 +1669,49 @@ def contacts_made(tokens: list[str]) -> list[int]:
     return out
 
 
+#: Words that may open a verdict's clause before its negator ("there was no contact", "with no collision").
+_VERDICT_OPENERS = frozenset(("there", "was", "were", "is", "be", "been", "had", "has", "with", "absolutely", "and",
+                              "thankfully", "luckily", "fortunately", "so", "but"))  # fmt: skip
+#: Words that open a denial of everyone, or one with its subject left out as a message does ("nobody
+#: touched", "neither hit the other", "Never hit him.").
+_NOBODY = frozenset(("nobody", "neither", "noone", "no-one", "none", "never"))
+#: Words of degree that deny only how hard a contact was ("did not hit him hard", "no serious collision").
+_GRADED = frozenset(("hard", "badly", "much", "properly", "fully", "squarely", "full", "head-on", "serious", "major",
+                     "big", "real", "heavy", "significant", "proper", "bad", "fast", "that"))  # fmt: skip
+
+
+def _verdict_denial(words: list[str], i: int, doer: str | None) -> bool:
+    """Whether the contact at ``i``, denied, is the writer's verdict on the scene ("No contact.", "no
+    collision occurred", "nobody touches", "I didn't hit him", "we never touched"): a negator on it with
+    nothing before it but words of existence, or a denial of everyone, of the ego or of contact with the
+    ego ("the van never touched us"). Not a denial said
+    of a third road user ("the lorry behind pulled up without contact"), not a time before the impact
+    ("braked 0.6 s before impact": no negator), nor one of degree only ("didn't hit him hard")."""
+    neg = next((k for k in range(i - 1, max(-1, i - 4), -1) if words[k] in _NEGATORS), None)
+    if neg is None or set(words[neg + 1 : i + 4]) & _GRADED:
+        return False
+    if words[neg] == "no" and all(w in _VERDICT_OPENERS for w in words[:neg]):
+        return True  # ("No contact.", "there was no collision", "no contact occurred")
+    if words[0] in _NOBODY or words[:2] == ["no", "one"] or doer == "ego":
+        return True  # ("nobody touches", "I did not hit him", "Never touched him.")
+    return words[i + 1 : i + 2] in (["me"], ["us"], ["ego"]) or words[i + 1 : i + 3] in (["the", "ego"], ["my", "car"])
+
+
+def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> list[Cue]:
+    """``cues`` with each contact said in a sentence before ``verdict`` (the last sentence whose verdict
+    denies contact or names the scene a near miss) kept as ``overruled``: a writer who ends on "no
+    contact" did not mean the earlier word of contact of this scene ("a crash on the ring road, so we
+    went the back way", "the road was rammed", "risk of vans striking cyclists"). A contact in the
+    verdict's own sentence or after it
+    stands ("clipped my mirror, but no contact with him"; "no contact with the first, the second hit me")."""
+    if verdict is None:
+        return cues
+    return [
+        Cue("overruled", c.words) if c.kind == "contact" and k < len(sentence_of) and sentence_of[k] < verdict else c
+        for k, c in enumerate(cues)
+    ]
+
+
 def outcome_cues(said: str) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order."""
@@ -1680,6 +1723,8 @@ def outcome_cues(said: str) -> list[Cue]:
     clauses = _clauses(tokens)
     raw = [ws for ws, _ in split(tokens, _BREAK_PUNCT - {","})]  # (its sentences with their conjunctions)
     said_in, cursor = -1, 0
+    sentence_of: list[int] = []  # (the sentence each cue is said in)
+    verdict: int | None = None  # (the last sentence that denies contact, or names a near miss, as its verdict)
     for n, clause in enumerate(clauses):
         words = clause.words
         ends_sentence = n + 1 == len(clauses) or clauses[n + 1].first_of_sentence
@@ -1697,6 +1742,7 @@ def outcome_cues(said: str) -> list[Cue]:
 
         def add(kind: str) -> None:
             cues.append(Cue(kind, text))  # noqa: B023 (the clause being read)
+            sentence_of.append(said_in)  # noqa: B023 (the sentence it is said in)
 
         for i, w in enumerate(words):
             if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
@@ -1720,10 +1766,15 @@ def outcome_cues(said: str) -> list[Cue]:
                 kind = _contact_kind(words, i, clause, sentence)
                 if kind is not None:
                     add(kind)
+                if kind == "denied" and _verdict_denial(words, i, doer):
+                    verdict = said_in  # ("No contact.": the last word on the scene's outcome)
                 continue
             if _near_noun(words, i):
                 own = _after_contact_noun(words, i)  # ("no collision (near miss)": "no" is not said of it)
-                add("safe" if _denied_before(words[own:], i - own) else "near")  # ("no near miss": nothing close)
+                denied = _denied_before(words[own:], i - own)
+                add("safe" if denied else "near")  # ("no near miss": nothing close)
+                if not denied and words[i + 1 : i + 2] not in (["misses"], ["calls"], ["shaves"], ["escapes"]):
+                    verdict = said_in  # ("I've just had a near miss": it names the scene; "near misses" are many)
                 continue
             if w.endswith("-free") and w[:-5] in _CONTACT_NOUNS | {"conflict", "incident", "drama", "problem"}:
                 add("safe")  # ("a collision-free pass")
@@ -1856,6 +1907,7 @@ def outcome_cues(said: str) -> list[Cue]:
                     add("evade")  # ("dived into the outside lane to avoid him")
                 elif not (_modal_perfect(words, i) or clause.after_if):
                     add("contact")  # ("couldn't avoid him", "was unable to avoid her": two denials)
+    cues = _overruled(cues, sentence_of, verdict)
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
     return cues
