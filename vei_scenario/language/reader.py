@@ -3179,6 +3179,10 @@ def _waits_at_a_crossing(a: _Actor, spec: ActorSpec, said: str) -> bool:
 #: Words after a verb of passing that say it has no object ("the van passed, then ...", "passed safely").
 _NO_OBJECT = frozenset(("", ".", ",", ";", ":", "!", "?", "and", "then", "but", "so", "when", "while", "as", "after",
                         "before", "without", "safely", "slowly", "at", "with", "in", "on", "by"))  # fmt: skip
+#: The writer's words for the ego as the object of a verb of passing: a road user coming the other way
+#: that "passed us" meets the ego in its own lane, as one that "went by" does (not the ego's lane: no
+#: overtake of anyone).
+_THE_EGO_AS_OBJECT = frozenset(("me", "us"))
 #: Verbs (lemmas) that with no object say a road user going by ("the van passed", "a lorry went past").
 _GOING_BY = frozenset(("pass", "go", "come", "drive", "ride"))
 
@@ -3832,7 +3836,8 @@ def _apply(m, who, r, link, added) -> None:
                 a.priority = a.priority or bool(cfg.get("_priority"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
-            a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and m.next_ in _NO_OBJECT)
+            by = m.next_ in _NO_OBJECT or m.next_ in _THE_EGO_AS_OBJECT  # ("went by", "passed us")
+            a.went_by = a.went_by or (name == "overtake" and _going_by(m.words) and by)
             if name == "follow_vehicle" and m.next_ in ("it", "him", "her", "them"):
                 a.said.add("behind_other")  # ("a cyclist followed it out": behind another road user)
             elif name == "follow_vehicle":
