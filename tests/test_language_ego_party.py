@@ -66,3 +66,35 @@ def test_the_partys_speed_is_the_egos():
 )
 def test_a_vehicle_the_party_only_meets_or_rides_in_stays_as_read(text, expected):
     assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text, kind",
+    [
+        ("Grandad's Volvo pulled up at the lights, then a cyclist ran the red from the left.", "bicycle"),
+        ("Dad's car was waiting at the give way line when a motorbike came fast from the right.", "car"),
+        ("Mummy's SUV stopped at the crossing and a boy ran out from the left.", "pedestrian"),
+        ("Papa's taxi halted at the signal and a scooter rider jumped the red from the right.", "e-scooter"),
+        ("Auntie's minivan stopped at the lights, then a cyclist ran the red from the right.", "bicycle"),
+        ("Grandma's Micra stopped for the lights while a boy on a bike ran the red from the left.", "bicycle"),
+    ],
+    ids=["grandad-uk", "dad-give-way", "mummy-zebra", "papa-signal-in", "auntie-minivan", "grandma-panel"],
+)
+def test_the_partys_vehicle_named_as_a_name_is_the_ego(text, kind):
+    """A party word called as a name, with no "my" ("Mum's car", "Grandad's Volvo"), owns the vehicle
+    the story is told about as much as "my mum's car" does: it is the ego, even where it only stops."""
+    assert kinds(text) == [kind]
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("The boy's dad's van stopped at the lights and a cyclist ran the red from the left.", ["van", "bicycle"]),
+        ("I stopped behind Mum's car at the lights when a cyclist ran the red from the left.", ["car", "bicycle"]),
+    ],
+    ids=["someone-elses-dad", "narrator-behind-it"],
+)
+def test_a_party_word_that_is_someone_elses_or_a_narrator_apart_stays_as_read(text, expected):
+    """ "the boy's dad" is another's party, not the narrator's; a narrator in the story behind the
+    vehicle ("I stopped behind Mum's car") is in another one."""
+    assert kinds(text) == expected

@@ -1349,6 +1349,9 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
 
 #: Titles before a person's name ("Mrs Okafor's car", "Encik Azlan's taxi"): the name is a person's.
 TITLES = frozenset({"mr", "mrs", "ms", "miss", "mx", "dr", "sir", "dame", "encik", "puan", "cik", "mdm", "madam"})
+#: Words before a party word that make it someone else's ("his mum's car", "the boy's dad's van", "a
+#: friend's car"): a determiner or another's possessive; a party word with none is called as a name.
+_SOMEONE_ELSES = DEFINITE | INDEFINITE | frozenset({"his", "her", "their", "its", "'s", "whose", "which"})
 #: The narrator as a road user of the story ("I", "me"), not only an owner ("my", "our").
 NARRATOR_PERSON = frozenset({"i", "we", "me", "us", "myself", "ourselves"})
 
@@ -1365,6 +1368,8 @@ def _owner_phrase(tokens: list[str], p, kind_at: KindAt) -> tuple[int, str] | No
     if o and tokens[o - 1] in PARTY_OWNERS:
         gender = _party_gender(tokens[o])
         return o - 1, gender
+    if tokens[o] in FAMILY and not (o and tokens[o - 1] in _SOMEONE_ELSES):
+        return o, _party_gender(tokens[o])  # ("Mum's hatchback", "Grandad's Volvo": the party named as a name)
     title = next((t for t in range(o - 1, max(o - 3, -1), -1) if tokens[t] in TITLES), None)
     if title is None or not all(w.isalpha() for w in tokens[title:o]):
         return None
