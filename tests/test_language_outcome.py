@@ -1108,3 +1108,31 @@ AVERTED = [
 @pytest.mark.parametrize(("text", "intent"), AVERTED)
 def test_trouble_averted(text: str, intent: str | None) -> None:
     assert _intent(text) == intent
+
+
+# a motion or a blow ending "against" or "onto" a part of a road user, or a blow said where it landed
+# ("hit on my door"), is a collision: a British text, a police report translated from German or Spanish,
+# a Nigerian and an Australian voice note, a claim form; near-miss negatives: against a flow or a
+# light, onto a place or a queue, a part at rest ("leaned against"), getting on ("hopped onto")
+PART_MET = [
+    ("The moped skidded and slid against my rear door.", "collision"),
+    ("His handlebar scraped against the side of our car as he squeezed by.", "collision"),
+    ("The taxi behind failed to stop and ran up onto the back of my car.", "collision"),
+    ("Vehicle B impacted with its front against the right rear of vehicle A.", "collision"),
+    ("The okada just slammed against my bumper at the junction.", "collision"),
+    ("The truck drove onto the rear of the stopped car.", "collision"),
+    ("A scooter came out of the side street and hit on my left front door.", "collision"),
+    ("The bike's wheel banged against the tailgate of the ute.", "collision"),
+    ("The cyclist rode against the traffic.", None),
+    ("The rider went against the red light.", None),
+    ("I pulled onto the back of the queue.", None),
+    ("The kid hopped onto the back of his mate's bike.", None),
+    ("The van pulled onto the side of the road.", None),
+    ("A courier leaned against my door at the lights.", None),
+    ("Rain beat against the windscreen all the way home.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), PART_MET)
+def test_a_part_met_against_or_onto(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent
