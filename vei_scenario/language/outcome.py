@@ -413,8 +413,10 @@ def _is_contact(words: list[str], i: int) -> bool:
 
 #: Verbs of a body or a thing at rest against another ("leaned against my door", "parked onto the
 #: back of the lorry"): no blow. Verbs of getting on ("hopped onto the back of his bike") mount.
-_RESTING = frozenset(("lean", "rest", "press", "prop", "park", "stand", "sit", "brace", "hold", "push", "stack",
-                      "load", "jump", "hop", "climb", "step", "leap", "get", "lift", "put", "tie", "strap"))  # fmt: skip
+_RESTING = frozenset(
+    ("lean", "rest", "press", "prop", "park", "stand", "sit", "brace", "hold", "push", "stack", "load", "jump", "hop",
+     "climb", "step", "leap", "get", "lift", "put", "tie", "strap")
+)  # fmt: skip
 #: Small words that stand between a verb of motion and "against"/"onto" ("drove up onto", "impacted
 #: with its front against", "went straight against").
 _TO_THE_GOAL = frozenset(("up", "straight", "right", "head-on", "with", "its", "his", "her", "their", "my", "front",
