@@ -1136,3 +1136,21 @@ PART_MET = [
 @pytest.mark.parametrize(("text", "intent"), PART_MET)
 def test_a_part_met_against_or_onto(text: str, intent: str | None) -> None:
     assert _intent(text) == intent
+
+
+# a compound verb of a collision written as one word, as texts and voice-to-text write it, is a
+# collision; near-miss negatives: the noun ("a tbone steak") and "the rear end" of a place
+CLOSED_COMPOUND = [
+    ("Mate got tboned by a ute at the lights, both ok.", "collision"),
+    ("Some guy rearended me at the roundabout lol", "collision"),
+    ("The cab was rearending the bus when the lights changed.", "collision"),
+    ("A lorry rearends the stopped car in the test.", "collision"),
+    ("A van came across the junction. Tboned. Nobody hurt thankfully.", "collision"),
+    ("The tbone steak was great, then a cyclist passed us.", None),
+    ("We parked at the rear end of the car park and a cyclist went by.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), CLOSED_COMPOUND)
+def test_a_compound_verb_of_collision_written_closed(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent

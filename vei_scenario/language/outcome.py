@@ -149,7 +149,20 @@ def _pos(word: str) -> dict[str, tuple[str, ...]]:
     if not found and "-" in word:
         head, _, last = word.rpartition("-")
         found = {pos: tuple(f"{head}-{x}" for x in forms) for pos, forms in lemmas(last).items()}
+    if not found:
+        found = _closed_compound(word)
     return found
+
+
+def _closed_compound(word: str) -> dict[str, tuple[str, ...]]:
+    """A compound verb of a collision written as one word ("tboned", "rearended", "rearending"), read as
+    its hyphenated form ("t-bone", "rear-end"): texting and voice-to-text drop the hyphen. Only the
+    compounds of :data:`_COMPOUND_FIRST`, and only inflected ("a tbone steak" is a noun)."""
+    for first, verb in _COMPOUND_FIRST.items():
+        rest = word[len(first) :]
+        if word.startswith(first) and rest != verb and verb in lemmas(rest).get("VERB", ()):
+            return {"VERB": (f"{first}-{verb}",)}
+    return {}
 
 
 @lru_cache(maxsize=8192)
