@@ -1154,3 +1154,22 @@ CLOSED_COMPOUND = [
 @pytest.mark.parametrize(("text", "intent"), CLOSED_COMPOUND)
 def test_a_compound_verb_of_collision_written_closed(text: str, intent: str | None) -> None:
     assert _intent(text) == intent
+
+
+# a warning of what will happen to anyone, in the spoken forms of "going to", is no contact that
+# happened; "speed bumps" and "road bumps" are the road's traffic calming, not a knock
+FORETOLD = [
+    ("A bus pulled out on me and I braked hard. Someone's gonna get hurt here.", "near_miss"),
+    ("A cyclist swerved out and I swerved. Somebody gunna get hit at this junction.", "near_miss"),
+    ("Bike came through the red, I stamped on the brake. Someone finna get killed here.", "near_miss"),
+    ("A lorry cut me up and I had to slam on. Someone is bound to get hit here.", "near_miss"),
+    ("A van nearly hit a boy on the crossing. The council should put in speed bumps.", "near_miss"),
+    ("The lorry narrowly missed her; residents want road bumps on the hill.", "near_miss"),
+    ("A scooter swerved out and I braked hard. The cyclist gonna sue him, he hit her.", "collision"),
+    ("The car behind bumps us at the lights.", "collision"),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), FORETOLD)
+def test_a_warning_or_traffic_calming_is_no_contact(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent

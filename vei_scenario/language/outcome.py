@@ -249,12 +249,17 @@ def _modal_perfect(words: list[str], i: int) -> bool:
 _INDEFINITE = frozenset(("someone", "somebody", "anyone", "anybody", "people", "eventually", "sooner"))
 
 
+#: The spoken contractions of "going to" as a future ("someone's gonna get hurt", "a kid finna get hit").
+_GOING_TO = frozenset(("gonna", "gunna", "gonnae", "finna", "gon"))
+
+
 def _predicted(words: list[str], i: int) -> bool:
     """Whether the word at ``i`` is under a future ("is going to", "will") said of anyone at all or
     of a time to come ("someone is going to get hit", "one day a child will be killed"): a warning,
     not what happened. A test's "the lorry is going to hit the cyclist" names who, and plays."""
     before = words[max(0, i - 8) : i]
-    future = any(before[k : k + 2] == ["going", "to"] for k in range(len(before) - 1)) or "will" in before[-4:]
+    future = any(before[k : k + 2] in (["going", "to"], ["bound", "to"]) for k in range(len(before) - 1))
+    future = future or "will" in before[-4:] or bool(set(before[-4:]) & _GOING_TO)
     one_day = any(words[k : k + 2] == ["one", "day"] for k in range(i))
     return future and (bool(set(words[:i]) & _INDEFINITE) or one_day)
 
@@ -406,6 +411,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
+        if "bump" in lem and prev in ("speed", "road"):
+            return False  # ("put in speed bumps", "over the road bumps": the road's traffic calming)
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
         return _meets_road_user(_object_of(words, i))
