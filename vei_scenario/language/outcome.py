@@ -347,8 +347,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         if w in ("crash", "crashes") and nxt in ("into", "through"):
             return True
         return not (w == "contact" and prev in ("eye",))
-    if w in ("against", "onto") and _driven_against_a_part(words, i):
-        return True  # ("slapped against his bumper", "drove up onto the rear of vehicle 2")
+    if w == "against" and _driven_against_a_part(words, i):
+        return True  # ("slapped against his bumper", "impacted with its front against the rear of my car")
     if w == "across" and not _lemmas(prev) & _SLIDING:
         pass  # ("cut across my bonnet", "darted across the front of the bus": a path in front, not a contact)
     elif w in ("onto", "off", "over", "across") and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
@@ -431,28 +431,26 @@ def _is_contact(words: list[str], i: int) -> bool:
     return False
 
 
-#: Verbs of a body or a thing at rest against another ("leaned against my door", "parked onto the
-#: back of the lorry"): no blow. Verbs of getting on ("hopped onto the back of his bike") mount.
+#: Verbs of a body or a thing at rest against another ("leaned against my door", "stacked against
+#: the side of the lorry"): no blow. Verbs of getting on ("jumped against the door") are no blow either.
 _RESTING = frozenset(
     ("lean", "rest", "press", "prop", "park", "stand", "sit", "brace", "hold", "push", "stack", "load", "jump", "hop",
      "climb", "step", "leap", "get", "lift", "put", "tie", "strap")
 )  # fmt: skip
-#: Small words that stand between a verb of motion and "against"/"onto" ("drove up onto", "impacted
-#: with its front against", "went straight against").
+#: Small words that stand between a verb of motion and "against" ("impacted with its front against",
+#: "went straight against").
 _TO_THE_GOAL = frozenset(("up", "straight", "right", "head-on", "with", "its", "his", "her", "their", "my", "front",
                           "nose", "end", "side", "back", "rear", "full", "square", "squarely", "hard"))  # fmt: skip
 
 
 def _driven_against_a_part(words: list[str], i: int) -> bool:
-    """Whether "against" or "onto" at ``i`` ends a motion into a part of a road user: a verb of
-    motion or impact before it (past a particle, an adverb or the mover's own part: "drove up onto",
-    "impacted with its front against") and a vehicle's part as its object that belongs to someone
-    ("against his bumper", "onto the rear of vehicle 2", "against the lateral right rear of my car").
-    A part is met, not a place moved into: "rode against the traffic", "ran against the red" and
-    "pulled onto the back road" name no part; "leaned against my door" and "hopped onto the back of
-    his bike" are at rest or mounting, not a blow. "onto" takes only the rear or side (a vehicle
-    driven up onto another's back: the German "auffahren auf" said in English); its front, bonnet or
-    windscreen are read where a body is thrown onto them."""
+    """Whether "against" at ``i`` ends a motion into a part of a road user: a verb of motion or
+    impact before it (past an adverb or the mover's own part: "impacted with its front against") and
+    a vehicle's part as its object that belongs to someone ("against his bumper", "against the
+    lateral right rear of my car"). A part is met, not a place moved into: "rode against the
+    traffic" and "ran against the red" name no part; "leaned against my door" is at rest, not a blow.
+    ("onto the back of" is not read so: coming up onto the back of a slower vehicle is catching it
+    up.)"""
     k = i - 1
     while k >= 0 and i - k <= 4 and words[k] in _TO_THE_GOAL:
         k -= 1
@@ -461,10 +459,7 @@ def _driven_against_a_part(words: list[str], i: int) -> bool:
     obj = words[i + 1 : i + 8]
     if not obj or obj[0] not in _POSSESSIVES | {"the", "a", "an"}:
         return False
-    owned = obj[0] in _POSSESSIVES or _of_a_road_user(obj)
-    if words[i] == "onto":
-        return owned and bool(set(obj[1:4]) & {"rear", "back", "tail", "side", "boot", "tailgate"})
-    return owned and _vehicle_part(obj)
+    return (obj[0] in _POSSESSIVES or _of_a_road_user(obj)) and _vehicle_part(obj)
 
 
 def _of_a_road_user(obj: list[str]) -> bool:
