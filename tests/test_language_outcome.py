@@ -1108,3 +1108,67 @@ AVERTED = [
 @pytest.mark.parametrize(("text", "intent"), AVERTED)
 def test_trouble_averted(text: str, intent: str | None) -> None:
     assert _intent(text) == intent
+
+
+# a motion or a blow ending "against" a part of a road user, or a blow said where it landed ("hit on
+# my door"), is a collision: a British text, a police report translated from Spanish, a Nigerian and
+# an Australian voice note, a claim form; near-miss negatives: against a flow or a light, a part at
+# rest ("leaned against"), and "onto the back of" (catching a slower vehicle up)
+PART_MET = [
+    ("The moped skidded and slid against my rear door.", "collision"),
+    ("His handlebar scraped against the side of our car as he squeezed by.", "collision"),
+    ("Vehicle B impacted with its front against the right rear of vehicle A.", "collision"),
+    ("The okada just slammed against my bumper at the junction.", "collision"),
+    ("We came up onto the back of a slow tractor.", None),
+    ("A scooter came out of the side street and hit on my left front door.", "collision"),
+    ("The bike's wheel banged against the tailgate of the ute.", "collision"),
+    ("The cyclist rode against the traffic.", None),
+    ("The rider went against the red light.", None),
+    ("I pulled onto the back of the queue.", None),
+    ("The kid hopped onto the back of his mate's bike.", None),
+    ("The van pulled onto the side of the road.", None),
+    ("A courier leaned against my door at the lights.", None),
+    ("Rain beat against the windscreen all the way home.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), PART_MET)
+def test_a_part_met_against(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent
+
+
+# a compound verb of a collision written as one word, as texts and voice-to-text write it, is a
+# collision; near-miss negatives: the noun ("a tbone steak") and "the rear end" of a place
+CLOSED_COMPOUND = [
+    ("Mate got tboned by a ute at the lights, both ok.", "collision"),
+    ("Some guy rearended me at the roundabout lol", "collision"),
+    ("The cab was rearending the bus when the lights changed.", "collision"),
+    ("A lorry rearends the stopped car in the test.", "collision"),
+    ("A van came across the junction. Tboned. Nobody hurt thankfully.", "collision"),
+    ("The tbone steak was great, then a cyclist passed us.", None),
+    ("We parked at the rear end of the car park and a cyclist went by.", None),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), CLOSED_COMPOUND)
+def test_a_compound_verb_of_collision_written_closed(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent
+
+
+# a warning of what will happen to anyone, in the spoken forms of "going to", is no contact that
+# happened; "speed bumps" and "road bumps" are the road's traffic calming, not a knock
+FORETOLD = [
+    ("A bus pulled out on me and I braked hard. Someone's gonna get hurt here.", "near_miss"),
+    ("A cyclist swerved out and I swerved. Somebody gunna get hit at this junction.", "near_miss"),
+    ("Bike came through the red, I stamped on the brake. Someone finna get killed here.", "near_miss"),
+    ("A lorry cut me up and I had to slam on. Someone is bound to get hit here.", "near_miss"),
+    ("A van nearly hit a boy on the crossing. The council should put in speed bumps.", "near_miss"),
+    ("The lorry narrowly missed her; residents want road bumps on the hill.", "near_miss"),
+    ("A scooter swerved out and I braked hard. The cyclist gonna sue him, he hit her.", "collision"),
+    ("The car behind bumps us at the lights.", "collision"),
+]
+
+
+@pytest.mark.parametrize(("text", "intent"), FORETOLD)
+def test_a_warning_or_traffic_calming_is_no_contact(text: str, intent: str | None) -> None:
+    assert _intent(text) == intent

@@ -149,7 +149,20 @@ def _pos(word: str) -> dict[str, tuple[str, ...]]:
     if not found and "-" in word:
         head, _, last = word.rpartition("-")
         found = {pos: tuple(f"{head}-{x}" for x in forms) for pos, forms in lemmas(last).items()}
+    if not found:
+        found = _closed_compound(word)
     return found
+
+
+def _closed_compound(word: str) -> dict[str, tuple[str, ...]]:
+    """A compound verb of a collision written as one word ("tboned", "rearended", "rearending"), read as
+    its hyphenated form ("t-bone", "rear-end"): texting and voice-to-text drop the hyphen. Only the
+    compounds of :data:`_COMPOUND_FIRST`, and only inflected ("a tbone steak" is a noun)."""
+    for first, verb in _COMPOUND_FIRST.items():
+        rest = word[len(first) :]
+        if word.startswith(first) and rest != verb and verb in lemmas(rest).get("VERB", ()):
+            return {"VERB": (f"{first}-{verb}",)}
+    return {}
 
 
 @lru_cache(maxsize=8192)
@@ -236,12 +249,17 @@ def _modal_perfect(words: list[str], i: int) -> bool:
 _INDEFINITE = frozenset(("someone", "somebody", "anyone", "anybody", "people", "eventually", "sooner"))
 
 
+#: The spoken contractions of "going to" as a future ("someone's gonna get hurt", "a kid finna get hit").
+_GOING_TO = frozenset(("gonna", "gunna", "gonnae", "finna", "gon"))
+
+
 def _predicted(words: list[str], i: int) -> bool:
     """Whether the word at ``i`` is under a future ("is going to", "will") said of anyone at all or
     of a time to come ("someone is going to get hit", "one day a child will be killed"): a warning,
     not what happened. A test's "the lorry is going to hit the cyclist" names who, and plays."""
     before = words[max(0, i - 8) : i]
-    future = any(before[k : k + 2] == ["going", "to"] for k in range(len(before) - 1)) or "will" in before[-4:]
+    future = any(before[k : k + 2] in (["going", "to"], ["bound", "to"]) for k in range(len(before) - 1))
+    future = future or "will" in before[-4:] or bool(set(before[-4:]) & _GOING_TO)
     one_day = any(words[k : k + 2] == ["one", "day"] for k in range(i))
     return future and (bool(set(words[:i]) & _INDEFINITE) or one_day)
 
@@ -329,6 +347,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         if w in ("crash", "crashes") and nxt in ("into", "through"):
             return True
         return not (w == "contact" and prev in ("eye",))
+    if w == "against" and _driven_against_a_part(words, i):
+        return True  # ("slapped against his bumper", "impacted with its front against the rear of my car")
     if w == "across" and not _lemmas(prev) & _SLIDING:
         pass  # ("cut across my bonnet", "darted across the front of the bus": a path in front, not a contact)
     elif w in ("onto", "off", "over", "across") and _is_verb(prev) and prev not in _LENGTH_UNITS | _SMALL_UNITS:
@@ -391,6 +411,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
+        if "bump" in lem and prev in ("speed", "road"):
+            return False  # ("put in speed bumps", "over the road bumps": the road's traffic calming)
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
         return _meets_road_user(_object_of(words, i))
@@ -407,6 +429,47 @@ def _is_contact(words: list[str], i: int) -> bool:
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
     return False
+
+
+#: Verbs of a body or a thing at rest against another ("leaned against my door", "stacked against
+#: the side of the lorry"): no blow. Verbs of getting on ("jumped against the door") are no blow either.
+_RESTING = frozenset(
+    ("lean", "rest", "press", "prop", "park", "stand", "sit", "brace", "hold", "push", "stack", "load", "jump", "hop",
+     "climb", "step", "leap", "get", "lift", "put", "tie", "strap")
+)  # fmt: skip
+#: Small words that stand between a verb of motion and "against" ("impacted with its front against",
+#: "went straight against").
+_TO_THE_GOAL = frozenset(("up", "straight", "right", "head-on", "with", "its", "his", "her", "their", "my", "front",
+                          "nose", "end", "side", "back", "rear", "full", "square", "squarely", "hard"))  # fmt: skip
+
+
+def _driven_against_a_part(words: list[str], i: int) -> bool:
+    """Whether "against" at ``i`` ends a motion into a part of a road user: a verb of motion or
+    impact before it (past an adverb or the mover's own part: "impacted with its front against") and
+    a vehicle's part as its object that belongs to someone ("against his bumper", "against the
+    lateral right rear of my car"). A part is met, not a place moved into: "rode against the
+    traffic" and "ran against the red" name no part; "leaned against my door" is at rest, not a blow.
+    ("onto the back of" is not read so: coming up onto the back of a slower vehicle is catching it
+    up.)"""
+    k = i - 1
+    while k >= 0 and i - k <= 4 and words[k] in _TO_THE_GOAL:
+        k -= 1
+    if k < 0 or not _is_verb(words[k]) or _lemmas(words[k]) & _RESTING or words[k] in _BETWEEN:
+        return False
+    obj = words[i + 1 : i + 8]
+    if not obj or obj[0] not in _POSSESSIVES | {"the", "a", "an"}:
+        return False
+    return (obj[0] in _POSSESSIVES or _of_a_road_user(obj)) and _vehicle_part(obj)
+
+
+def _of_a_road_user(obj: list[str]) -> bool:
+    """Whether a part's noun phrase ``obj`` goes on with "of" and a road user or the ego ("the rear of
+    vehicle 2", "the side of my car", "the back of the bus"), not a place or a line ("the back of the
+    queue", "the side of the road")."""
+    if "of" not in obj[1:5]:
+        return False
+    owner = [w for w in obj[obj.index("of", 1) + 1 :][:3] if w not in _DETERMINERS]
+    return bool(owner) and (owner[0] in _EGO_HEADS or owner[0] in _POSSESSIVES or names_road_user(owner))
 
 
 #: Verbs of contact compounded of a noun and a verb, by their first word, when written as two words
@@ -497,6 +560,8 @@ def _verbal(words: list[str], i: int) -> bool:
         return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
     if nxt == "ego":
         return True  # ("a taxi hit my car", read as "hit ego": the ego's vehicle is the object)
+    if nxt in ("on", "against") and _vehicle_part(words[i + 2 : i + 6]):
+        return True  # ("hit on my front door", "struck against the rear bumper": a blow where it landed)
     return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with", "by"} | _POSSESSIVES | _PERSON_OBJECTS
 
 
