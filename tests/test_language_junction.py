@@ -415,3 +415,66 @@ PULLS_OUT_AND_RUNS = [
 def test_a_pull_out_with_a_light_or_a_crossing_said_still_runs_through(text):
     actor, names = _only(text)
     assert names[:1] == ["run_red_light"], (actor.relation, names)
+
+
+def _start(text: str) -> list[tuple[str, str]]:
+    from vei_scenario.language.rules_backend import layers_from_text
+
+    return [(a["type"], a["spawn"]["relation"]) for a in layers_from_text(text, 0)["adversaries"]]
+
+
+# a rider who crosses at a junction from a side read as an arm (its road and heading said, as a report
+# puts it), with no kerb, footway or crossing said, comes along the crossing road, out of that arm
+THROUGH_FROM_AN_ARM = [
+    (
+        "Car eastbound at 40 km/h on a green; the bicycle was southbound on the side street, approaching "
+        "from the car's left, and crossed in front of it.",
+        "left",
+    ),
+    (
+        "Vehicle 1 was northbound at 30 mph through the intersection. The cyclist was westbound on the cross "
+        "street, approaching from V1's right, and rode across in front of it.",
+        "right",
+    ),
+    (
+        "The van was travelling west at 25 mph over the crossroads; the e-scooter rider was northbound on "
+        "Mill Street, approaching from the van's left, and crossed in front of the van.",
+        "left",
+    ),
+    (
+        "SV eastbound at 50 km/h straight through the junction. E-scooter southbound on the minor road, "
+        "i.e. from the SV's left, crossed the SV's path.",
+        "left",
+    ),
+    ("I had the green at the lights, about 30 km/h, and a guy on an e-scooter jumped the red from the left.", "left"),
+]
+
+
+@pytest.mark.parametrize("text, side", THROUGH_FROM_AN_ARM)
+def test_a_rider_crossing_from_an_arm_starts_on_that_arm(text, side):
+    assert [rel for _, rel in _start(text)] == [f"junction_{side}"]
+
+
+# near misses: a rider said on a kerb or footway starts there, and one that crosses the mouth of a
+# side road crosses it from the kerb beside it
+THROUGH_NEAR_MISSES = [
+    (
+        "The car was eastbound at 30 mph through the crossroads when a cyclist on the footway approaching "
+        "from its left crossed in front of it.",
+        "roadside_left",
+    ),
+    (
+        "At the crossroads, going straight at 30 km/h, a cyclist rode across the mouth of the side road on "
+        "my right in front of me.",
+        "roadside_right",
+    ),
+    (
+        "At the crossroads on a green at 25 mph a cyclist came off the pavement on my right against the red.",
+        "roadside_right",
+    ),
+]
+
+
+@pytest.mark.parametrize("text, relation", THROUGH_NEAR_MISSES)
+def test_a_rider_placed_off_the_road_keeps_its_kerb(text, relation):
+    assert [rel for _, rel in _start(text)] == [relation]

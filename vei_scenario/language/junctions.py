@@ -332,6 +332,25 @@ def rides_across_from_an_arm(junction: bool, kind: str, from_arm: bool, kerb: bo
     return junction and kind in _RIDERS and from_arm and not kerb and side in ("left", "right")
 
 
+def rides_through_from_a_side(
+    relation: str | None, kind: str, first: str | None, side: str | None, off_the_road: bool, route: str | None
+) -> str | None:
+    """The arm a rider starts on who crosses the ego's road at a junction from a side with no kerb,
+    footway or crossing said, where the side is read as an arm ("approaching from our right on the cross
+    street and entered the junction") or the rider runs the red light (``side`` is then given; the red
+    stands at the arm's stop line, not at a kerb): a rider with nothing to place it off the road rides the
+    road, so from that side it comes along the crossing road's carriageway, not off a kerb.
+    None (keep the kerb) where the reading has it elsewhere than at that side's kerb, where it is said on
+    a kerb, footway or lane, leaves a place beside the road (a path, a driveway), waits, or goes to a side
+    (``off_the_road``), and where the ego turns
+    towards that side: the rider there may be beside the ego at the kerb, which the turn then crosses."""
+    if kind not in _RIDERS or first != "cross_in_front" or off_the_road or side not in ("left", "right"):
+        return None
+    if relation != f"roadside_{side}" or route == side:
+        return None
+    return f"junction_{side}"
+
+
 #: Road users who cross the mouth of a side road on foot or on wheels.
 _WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter"))
 

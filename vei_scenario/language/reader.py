@@ -2711,6 +2711,18 @@ def _read(text: str) -> Reading:
             junctions.crosses_the_arm_turned_into(a.kind, first_act, a.arm, a.from_arm, own_side, r.ego_route)
             or spec.relation
         )  # ("I turned left into it; a man was crossing the side road": on the left)
+        said_arm = a.relation.rsplit("_", 1)[1] if a.relation in ("junction_left", "junction_right") else None
+        off_road = bool(
+            a.kerb or a.kerb_side or a.pavement or a.lane_side or a.stationary or a.goes_to or a.out_of_place
+        )
+        runs_red = any(b[0] == "run_red_light" for b in behaviours)  # (a red at the arm's stop line)
+        if junction:
+            spec.relation = (
+                junctions.rides_through_from_a_side(
+                    spec.relation, a.kind, first_act, said_arm or (a.side if runs_red else None), off_road, r.ego_route
+                )
+                or spec.relation
+            )  # ("a cyclist came through from the right": along the crossing road, not off its kerb)
         if (
             junction
             and spec.relation in ("junction_left", "junction_right")
