@@ -69,6 +69,8 @@ FIRST = {
     "language_independent_z16.json": ((50, 50, 11, 48), "sealed for two rounds of reader work"),
     "language_independent_z17.json": ((50, 50, 6, 47), "sealed for two rounds of reader work"),
     "language_independent_z18.json": ((50, 50, 10, 46), "sealed for two rounds of reader work"),
+    "language_independent_z19.json": ((50, 50, 3, 42), "sealed for two rounds of reader work"),
+    "language_independent_z20.json": ((50, 50, 23, 49), "sealed for two rounds of reader work"),
 }
 
 
