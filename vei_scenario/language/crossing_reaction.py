@@ -30,7 +30,7 @@ from vei_scenario.language.lemmas import lemmas
 #: Moves that bring a road user across the ego's path rather than along its lane.
 CROSSING = frozenset(("cross_in_front", "turn_into", "turn_across", "run_red_light", "wrong_way"))
 #: Behaviours of slowing or stopping.
-_SLOWING = frozenset(("sudden_stop", "stop", "change_speed"))
+SLOWING = frozenset(("sudden_stop", "stop", "change_speed"))
 #: Behaviours of going on as before: no move that brings a road user anywhere.
 _GOING_ON = frozenset(("keep_going", "keep_lane", "along_road", "follow_vehicle"))
 #: Words that place a stop in the road: where the road user stands once stopped.
@@ -62,7 +62,7 @@ def said_free(name: str, cfg: dict, tokens: list[str], start: int, end: int, own
     word on), not joined to a move before by "then" in its sentence and not said with the road user's
     own noun right before it (``own_noun``: whether a word names that road user). Speeding up ("he
     accelerated") is no reaction."""
-    if name not in _SLOWING:
+    if name not in SLOWING:
         return False
     if name == "change_speed" and float(cfg.get("speed_delta_mps", -1.0)) > 0:
         return False
@@ -95,7 +95,7 @@ def drop_egos_reactions(behaviours: list) -> list:
     out: list = []
     for name, cfg, crit, link in behaviours:
         free = cfg.pop(MARK, None)
-        last_move = next((b[0] for b in reversed(out) if b[0] not in _SLOWING | _GOING_ON), None)
+        last_move = next((b[0] for b in reversed(out) if b[0] not in SLOWING | _GOING_ON), None)
         if free and last_move in CROSSING:
             continue  # ("pulled out right in front of her. She braked": hers)
         out.append((name, cfg, crit, link))

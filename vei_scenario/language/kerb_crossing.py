@@ -20,21 +20,20 @@ side).
 
 from __future__ import annotations
 
-from vei_scenario.language.crossing_reaction import MARK
+from vei_scenario.language.crossing_reaction import MARK, SLOWING
+from vei_scenario.language.discourse import VULNERABLE
 
 #: Road users who leave the side of the road on foot or on two small wheels (or whose kind the reader
 #: takes from what they do).
-_WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter", "unknown"))
+_WALKERS_AND_RIDERS = VULNERABLE | {"unknown"}
 #: Behaviours that say no more than that someone goes.
 _BARE_GOING = frozenset(("keep_going",))
-#: Behaviours of slowing or stopping, which a mark may say are the ego's.
-_SLOWING = frozenset(("sudden_stop", "stop", "change_speed"))
 
 
 def _free_brake(behaviour: tuple) -> bool:
     """Whether ``behaviour`` (name, cfg, criticality, link) is a slowing said free of its road user."""
     name, cfg = behaviour[0], behaviour[1]
-    return name in _SLOWING and bool(cfg.get(MARK))
+    return name in SLOWING and bool(cfg.get(MARK))
 
 
 def crossing_then_brakes(kind: str, behaviours: list, quiet: bool, own_verb: bool) -> list | None:
