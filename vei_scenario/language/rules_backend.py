@@ -505,6 +505,24 @@ ROADSIDE_TURN_ROOM_M = 20.0
 ROADSIDE_LEAD_S = 2.5
 
 
+def _turn_in_from_roadside_at(
+    distance_m: float, ego_speed: float, lateral_m: float, cfg: dict, vehicle: tuple[float, float, float]
+) -> None:
+    """A road user turning out of a place beside the road at a stated distance ahead of the ego ("pulls
+    out of a driveway 20 m ahead of me"): as one from a side road (:func:`_turn_in_at_distance`), it
+    sets off when the ego is that far away, where it can still get in ahead of the ego, else it is in
+    the ego's lane that far ahead; the timing (``arrival_gap_s``) says which, and the distance is kept
+    in ``cfg``."""
+    from vei_scenario.language.behaviours import turn_into
+
+    turn_m, along_m = turn_into.roadside_turn_m(lateral_m)
+    gap = (distance_m + along_m) / max(ego_speed, 0.5) - turn_into.time_to_join_s(turn_m, cfg, *vehicle)
+    if gap < 0.0:  # (it would join behind the ego: it is in its lane that far ahead)
+        gap = distance_m / max(ego_speed, 0.5)
+    cfg["arrival_gap_s"] = round(min(gap, turn_into.PARAMETERS["arrival_gap_s"].high), 3)
+    cfg["distance_m"] = round(distance_m, 3)
+
+
 def _roadside_to_ego_lane_m(relation: str, lanes: int, ego_lane: int) -> float:
     """How far (m) a road user standing beside the road on ``relation``'s side is from the centre of
     the ego's lane (``ego_lane``, 1 the kerb lane, of ``lanes``): the writer's roadside start
@@ -685,11 +703,11 @@ def _place_adversary(
     if relation.startswith("roadside") and not vulnerable(kind) and behaviour_name == "turn_into":
         # turns out of a place beside the road (a driveway, a gate): where the text puts it, else far enough
         # ahead for the ego to close in for lead_s before it sets off (turn_into.roadside_trigger_m)
-        if distance_m is None:
-            lateral = _roadside_to_ego_lane_m(relation, lanes, int(ego["lane"]))
-            trigger = mod.roadside_trigger_m(ego_speed, lateral, cfg, _vehicle(kind))
-            distance_m = round(lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S, 3)
-        spawn["longitudinal_m"] = distance_m
+        lateral = _roadside_to_ego_lane_m(relation, lanes, int(ego["lane"]))
+        if distance_m is not None:
+            _turn_in_from_roadside_at(distance_m, ego_speed, lateral, cfg, _vehicle(kind))
+        trigger = mod.roadside_trigger_m(ego_speed, lateral, cfg, _vehicle(kind))
+        spawn["longitudinal_m"] = round(lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S, 3)
         return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
