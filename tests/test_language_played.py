@@ -347,3 +347,18 @@ def test_a_vehicle_turning_out_of_a_place_beside_the_road_ends_ahead_in_the_ego_
         assert lon > 0 and abs(lat) < 1.2 and abs(heading) < 0.2, (gap_s, lon, lat, heading)
         if gap_s >= 0.6:
             assert result.collisions == [], (gap_s, result.collisions)
+
+
+@pytest.mark.parametrize(("ego_kph", "metres"), [(30, 15), (90, 20), (90, 60)])
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_vehicle_turning_out_of_a_place_beside_the_road_at_a_stated_distance_still_gets_in_ahead(
+    side, ego_kph, metres, tmp_path
+):
+    """A car "pulled out of a driveway 20 m ahead" at speed: it sets off when the ego is that far away where
+    it can still get in ahead, else it is in the ego's lane that far ahead; either way the distance is
+    in its layers and it plays as a turn into the ego's lane ahead of the ego."""
+    text = f"At {ego_kph} km/h a car pulled out of a driveway on my {side} {metres} m ahead of me."
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "turn_into" and adv["behaviour"]["config"]["distance_m"] == metres
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
