@@ -316,7 +316,9 @@ def test_a_red_light_runner_crosses_in_front_of_an_ego_standing_at_its_line(text
 def _roadside_turn_in(side: str, ego_kph: float, gap_s: float, map_kind: str) -> dict:
     """Layers of an ego at ``ego_kph`` and a car standing beside its road on ``side`` that turns into
     it (out of a driveway), timed ``gap_s`` ahead of the ego, on a ``map_kind`` map."""
-    where = "On a straight road I was doing" if map_kind == "straight" else "Approaching a crossroads at"
+    where = {"straight": "On a straight road I was doing", "crossroad": "Approaching a crossroads at"}.get(
+        map_kind, "Coming round a bend at"
+    )
     layers = layers_from_text(f"{where} {ego_kph:g} km/h when a car pulled out of a driveway on my {side}.", 0)
     [adv] = layers["adversaries"]
     assert (adv["spawn"]["relation"], adv["behaviour"]["behaviour"]) == (f"roadside_{side}", "turn_into"), adv
@@ -325,7 +327,7 @@ def _roadside_turn_in(side: str, ego_kph: float, gap_s: float, map_kind: str) ->
     return layers
 
 
-@pytest.mark.parametrize("map_kind", ["straight", "crossroad"])
+@pytest.mark.parametrize("map_kind", ["straight", "crossroad", "curve"])
 @pytest.mark.parametrize("ego_kph", [30, 60, 90])
 @pytest.mark.parametrize("side", ["left", "right"])
 def test_a_vehicle_turning_out_of_a_place_beside_the_road_ends_ahead_in_the_ego_s_lane(
@@ -339,6 +341,8 @@ def test_a_vehicle_turning_out_of_a_place_beside_the_road_ends_ahead_in_the_ego_
         layers = _roadside_turn_in(side, ego_kph, gap_s, map_kind)
         result = play_layers(layers, tmp_path)
         assert played_problems(result, layers) == [], gap_s
+        if map_kind == "curve":  # (on the bend the one ahead is off the ego's heading: the check above holds)
+            continue
         ego, car = result.traces[result.ego], result.traces["Adversary1"]
         dx, dy = car.x[-1] - ego.x[-1], car.y[-1] - ego.y[-1]
         lon = dx * math.cos(ego.yaw[-1]) + dy * math.sin(ego.yaw[-1])

@@ -233,6 +233,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     _place_occluders(reading, adversaries)
     start_m = ego.get("distance_m")
     _room_ahead_before_feature(ego, adversaries, kind)
+    _turn_in_before_bend(ego, adversaries, kind, lanes)
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
     make_room_to_roll_up(ego, adversaries)
     if ego.get("distance_m") != start_m:
@@ -501,6 +502,27 @@ def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) ->
 #: How far along the road (m) a road user turning out of a place beside it goes before it is in the ego's
 #: lane and drives it (turn_into.roadside_path_st across two lanes each way, from the far side).
 ROADSIDE_TURN_ROOM_M = 20.0
+
+
+def _before_bend_m(lanes: int) -> float:
+    """The farthest (m) the ego starts before the bend of a curve map, less a clearance: a road user
+    turning into the ego's lane from beside the road does so on that stretch. Why: once both are on
+    the bend, the one ahead in the ego's lane is off the ego's heading, and is no longer seen there."""
+    return (layout({"kind": "curve", "lanes_per_direction": lanes}).feature_s_m or 0.0) - 2 * MEETING_CLEAR_OF_FEATURE_M
+
+
+def _turn_in_before_bend(ego: dict, adversaries: list[dict], kind: str, lanes: int) -> None:
+    """On a curve map the ego starts far enough before the bend for a road user turning into its lane
+    from beside the road to be in it before the bend (:func:`_before_bend_m`); where it is, nothing changes."""
+    if kind != "curve" or "distance_m" not in ego:
+        return
+    for adv in adversaries:
+        if adv["spawn"]["relation"].startswith("roadside") and _first_node(adv)["behaviour"] == "turn_into":
+            need = float(adv["spawn"]["longitudinal_m"]) + ROADSIDE_TURN_ROOM_M + MEETING_CLEAR_OF_FEATURE_M
+            if need > float(ego["distance_m"]):
+                ego["distance_m"] = round(min(need, _before_bend_m(lanes) + MEETING_CLEAR_OF_FEATURE_M), 3)
+
+
 #: How long (s) the ego closes in on a road user beside the road before it turns into the road.
 ROADSIDE_LEAD_S = 2.5
 
@@ -707,7 +729,10 @@ def _place_adversary(
         if distance_m is not None:
             _turn_in_from_roadside_at(distance_m, ego_speed, lateral, cfg, _vehicle(kind))
         trigger = mod.roadside_trigger_m(ego_speed, lateral, cfg, _vehicle(kind))
-        spawn["longitudinal_m"] = round(lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S, 3)
+        lon = lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S
+        if ego.get("placement") == "on_curve":  # (in on the road before the bend, as far as it has room)
+            lon = max(lengths / 2 + trigger, min(lon, _before_bend_m(lanes) - ROADSIDE_TURN_ROOM_M))
+        spawn["longitudinal_m"] = round(lon, 3)
         return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
