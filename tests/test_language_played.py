@@ -311,3 +311,58 @@ def test_a_red_light_runner_crosses_in_front_of_an_ego_standing_at_its_line(text
     ahead = (lon > 0) & (lon < 30.0)
     assert (np.sign(lat[ahead]) != np.sign(lat[ahead][0])).any()  # (across the ego's way ahead of it)
     assert played_problems(result, layers) == []
+
+
+def _roadside_turn_in(side: str, ego_kph: float, gap_s: float, map_kind: str) -> dict:
+    """Layers of an ego at ``ego_kph`` and a car standing beside its road on ``side`` that turns into
+    it (out of a driveway), timed ``gap_s`` ahead of the ego, on a ``map_kind`` map."""
+    where = {"straight": "On a straight road I was doing", "crossroad": "Approaching a crossroads at"}.get(
+        map_kind, "Coming round a bend at"
+    )
+    layers = layers_from_text(f"{where} {ego_kph:g} km/h when a car pulled out of a driveway on my {side}.", 0)
+    [adv] = layers["adversaries"]
+    assert (adv["spawn"]["relation"], adv["behaviour"]["behaviour"]) == (f"roadside_{side}", "turn_into"), adv
+    assert layers["environment"]["map"]["kind"] == map_kind
+    adv["behaviour"]["config"]["arrival_gap_s"] = gap_s
+    return layers
+
+
+@pytest.mark.parametrize("map_kind", ["straight", "crossroad", "curve"])
+@pytest.mark.parametrize("ego_kph", [30, 60, 90])
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_vehicle_turning_out_of_a_place_beside_the_road_ends_ahead_in_the_ego_s_lane(
+    side, ego_kph, map_kind, tmp_path
+):
+    """A turn into the road from beside it (a driveway, a field gate: a roadside start, no side road)
+    is written and played: the road user comes across the kerb line (from the far side across the
+    oncoming lanes) into the ego's lane ahead of the ego, and drives on there the ego's way, not its
+    own lane's the wrong way, and nobody is hit at a gap the ego can brake for."""
+    for gap_s in (0.0, 0.6, 2.0):
+        layers = _roadside_turn_in(side, ego_kph, gap_s, map_kind)
+        result = play_layers(layers, tmp_path)
+        assert played_problems(result, layers) == [], gap_s
+        if map_kind == "curve":  # (on the bend the one ahead is off the ego's heading: the check above holds)
+            continue
+        ego, car = result.traces[result.ego], result.traces["Adversary1"]
+        dx, dy = car.x[-1] - ego.x[-1], car.y[-1] - ego.y[-1]
+        lon = dx * math.cos(ego.yaw[-1]) + dy * math.sin(ego.yaw[-1])
+        lat = -dx * math.sin(ego.yaw[-1]) + dy * math.cos(ego.yaw[-1])
+        heading = (car.yaw[-1] - ego.yaw[-1] + math.pi) % (2 * math.pi) - math.pi
+        assert lon > 0 and abs(lat) < 1.2 and abs(heading) < 0.2, (gap_s, lon, lat, heading)
+        if gap_s >= 0.6:
+            assert result.collisions == [], (gap_s, result.collisions)
+
+
+@pytest.mark.parametrize(("ego_kph", "metres"), [(30, 15), (90, 20), (90, 60)])
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_a_vehicle_turning_out_of_a_place_beside_the_road_at_a_stated_distance_still_gets_in_ahead(
+    side, ego_kph, metres, tmp_path
+):
+    """A car "pulled out of a driveway 20 m ahead" at speed: it sets off when the ego is that far away where
+    it can still get in ahead, else it is in the ego's lane that far ahead; either way the distance is
+    in its layers and it plays as a turn into the ego's lane ahead of the ego."""
+    text = f"At {ego_kph} km/h a car pulled out of a driveway on my {side} {metres} m ahead of me."
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert adv["behaviour"]["behaviour"] == "turn_into" and adv["behaviour"]["config"]["distance_m"] == metres
+    assert played_problems(play_layers(layers, tmp_path), layers) == []

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, fields, replace
 from functools import lru_cache
 
 from vei_scenario.language import (
+    access_pull_out,
     addressee,
     crossing_reaction,
     crowds,
@@ -272,6 +273,7 @@ class _Actor:
     parked: bool = False  # said to be parked (at the side of the road, unless put in a lane)
     double_parked: bool = False  # parked beside the parked ones: in the outer traffic lane
     out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
+    place: str | None = None  # the head noun of that place ("driveway", "gate", "stop", "park")
     far_side: bool = False  # said to come from the other side ("from the opposite side")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
@@ -2752,6 +2754,8 @@ def _read(text: str) -> Reading:
         only_there = [b[0] for b in spec.behaviours] in ([], ["keep_going"])  # (nothing it does is said)
         going_on = [b[0] for b in spec.behaviours[:1]] != ["cut_in"]  # (not "doesn't yield": it takes the way)
         _specialise(a, spec, junction, left_hand, across, passes_another, signal)
+        if a.kind in VEHICLES:  # ("pulled out of a driveway on the right": it turns into the road)
+            spec.behaviours = access_pull_out.turns_in_from_an_access(a.place, spec.relation, spec.behaviours)
         spec.behaviours = junctions.through_from_opposite(
             spec.relation, spec.behaviours, said, passes_another, going_on
         )
@@ -3943,6 +3947,7 @@ def _apply(m, who, r, link, added) -> None:
             a.came_from = a.came_from or _from(m)
         elif m.slot == "place":
             a.out_of_place = True
+            a.place = a.place or m.value
         elif m.slot == "far_side":
             a.far_side = True
         elif m.slot == "kerb_side" and sides.travels_on_the_wrong_side(a.kind, m.words, m.next_):

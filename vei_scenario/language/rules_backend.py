@@ -17,7 +17,7 @@ from vei_scenario.language import lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
-from vei_scenario.language.maps import ARM_LENGTH_M, ROUNDABOUT_RADIUS_M, layout
+from vei_scenario.language.maps import ARM_LENGTH_M, LANE_WIDTH_M, ROUNDABOUT_RADIUS_M, layout
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
@@ -233,6 +233,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     _place_occluders(reading, adversaries)
     start_m = ego.get("distance_m")
     _room_ahead_before_feature(ego, adversaries, kind)
+    _turn_in_before_bend(ego, adversaries, kind, lanes)
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
     make_room_to_roll_up(ego, adversaries)
     if ego.get("distance_m") != start_m:
@@ -423,6 +424,8 @@ def _room_ahead_before_feature(ego: dict, adversaries: list[dict], kind: str) ->
         meet = lon
         if spawn.get("facing", "with") == "with" and spawn["relation"] != "oncoming" and speed < ego_speed - 1.0:
             meet = lon * ego_speed / (ego_speed - speed)  # (the ego catches up with it there)
+        if spawn["relation"].startswith("roadside") and _first_node(adv)["behaviour"] == "turn_into":
+            meet = lon + ROADSIDE_TURN_ROOM_M  # (it turns out along the road: in the ego's lane before the junction)
         need = max(need, lon, meet + MEETING_CLEAR_OF_FEATURE_M if meet > lon else lon)
     if need > float(ego["distance_m"]) - 1.0:
         ego["distance_m"] = round(min(need + MEETING_CLEAR_OF_FEATURE_M, ARM_LENGTH_M - 20.0), 3)
@@ -494,6 +497,63 @@ def stop_beyond_junction(ego: dict, adversaries: list[dict], names: set[str]) ->
         through = float(ego["distance_m"]) - lon + 2 * JUNCTION_RADIUS_M + TYPES[adv["type"]][0][0]
         if through > 0:
             node["config"]["delay_s"] = round(through / speed, 3)
+
+
+#: How far along the road (m) a road user turning out of a place beside it goes before it is in the ego's
+#: lane and drives it (turn_into.roadside_path_st across two lanes each way, from the far side).
+ROADSIDE_TURN_ROOM_M = 20.0
+
+
+def _before_bend_m(lanes: int) -> float:
+    """The farthest (m) the ego starts before the bend of a curve map, less a clearance: a road user
+    turning into the ego's lane from beside the road does so on that stretch. Why: once both are on
+    the bend, the one ahead in the ego's lane is off the ego's heading, and is no longer seen there."""
+    return (layout({"kind": "curve", "lanes_per_direction": lanes}).feature_s_m or 0.0) - 2 * MEETING_CLEAR_OF_FEATURE_M
+
+
+def _turn_in_before_bend(ego: dict, adversaries: list[dict], kind: str, lanes: int) -> None:
+    """On a curve map the ego starts far enough before the bend for a road user turning into its lane
+    from beside the road to be in it before the bend (:func:`_before_bend_m`); where it is, nothing changes."""
+    if kind != "curve" or "distance_m" not in ego:
+        return
+    for adv in adversaries:
+        if adv["spawn"]["relation"].startswith("roadside") and _first_node(adv)["behaviour"] == "turn_into":
+            need = float(adv["spawn"]["longitudinal_m"]) + ROADSIDE_TURN_ROOM_M + MEETING_CLEAR_OF_FEATURE_M
+            if need > float(ego["distance_m"]):
+                ego["distance_m"] = round(min(need, _before_bend_m(lanes) + MEETING_CLEAR_OF_FEATURE_M), 3)
+
+
+#: How long (s) the ego closes in on a road user beside the road before it turns into the road.
+ROADSIDE_LEAD_S = 2.5
+
+
+def _turn_in_from_roadside_at(
+    distance_m: float, ego_speed: float, lateral_m: float, cfg: dict, vehicle: tuple[float, float, float]
+) -> None:
+    """A road user turning out of a place beside the road at a stated distance ahead of the ego ("pulls
+    out of a driveway 20 m ahead of me"): as one from a side road (:func:`_turn_in_at_distance`), it
+    sets off when the ego is that far away, where it can still get in ahead of the ego, else it is in
+    the ego's lane that far ahead; the timing (``arrival_gap_s``) says which, and the distance is kept
+    in ``cfg``."""
+    from vei_scenario.language.behaviours import turn_into
+
+    turn_m, along_m = turn_into.roadside_turn_m(lateral_m)
+    gap = (distance_m + along_m) / max(ego_speed, 0.5) - turn_into.time_to_join_s(turn_m, cfg, *vehicle)
+    if gap < 0.0:  # (it would join behind the ego: it is in its lane that far ahead)
+        gap = distance_m / max(ego_speed, 0.5)
+    cfg["arrival_gap_s"] = round(min(gap, turn_into.PARAMETERS["arrival_gap_s"].high), 3)
+    cfg["distance_m"] = round(distance_m, 3)
+
+
+def _roadside_to_ego_lane_m(relation: str, lanes: int, ego_lane: int) -> float:
+    """How far (m) a road user standing beside the road on ``relation``'s side is from the centre of
+    the ego's lane (``ego_lane``, 1 the kerb lane, of ``lanes``): the writer's roadside start
+    (:mod:`~vei_scenario.language.placement`), across the oncoming lanes from the far side."""
+    from vei_scenario.language.placement import KERB_OFFSET_M
+
+    edge = lanes * LANE_WIDTH_M + KERB_OFFSET_M
+    centre = (lanes - ego_lane + 0.5) * LANE_WIDTH_M  # (right of the centre line)
+    return edge - centre if relation == "roadside_right" else edge + centre
 
 
 def _vehicle(kind: str) -> tuple[float, float, float]:
@@ -661,6 +721,18 @@ def _place_adversary(
         # ego has closed in for lead_s, as a parked car that pulls out does
         lead = float(cfg.get("lead_s", 2.5))
         spawn["longitudinal_m"] = round(lengths / 2 + mod.pull_out_distance_m(ego_speed, cfg) + ego_speed * lead, 3)
+        return spawn, 0.0
+    if relation.startswith("roadside") and not vulnerable(kind) and behaviour_name == "turn_into":
+        # turns out of a place beside the road (a driveway, a gate): where the text puts it, else far enough
+        # ahead for the ego to close in for lead_s before it sets off (turn_into.roadside_trigger_m)
+        lateral = _roadside_to_ego_lane_m(relation, lanes, int(ego["lane"]))
+        if distance_m is not None:
+            _turn_in_from_roadside_at(distance_m, ego_speed, lateral, cfg, _vehicle(kind))
+        trigger = mod.roadside_trigger_m(ego_speed, lateral, cfg, _vehicle(kind))
+        lon = lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S
+        if ego.get("placement") == "on_curve":  # (in on the road before the bend, as far as it has room)
+            lon = max(lengths / 2 + trigger, min(lon, _before_bend_m(lanes) - ROADSIDE_TURN_ROOM_M))
+        spawn["longitudinal_m"] = round(lon, 3)
         return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)

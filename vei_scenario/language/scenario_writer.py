@@ -386,6 +386,11 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
                     _properties({"riderType": "normal", "route": f"{name}_crossing", "egoEntity": EGO, "v0_mps": 4.5}),
                 )
             position = xosc.WorldPosition(round(path[0][0], 3), round(path[0][1], 3), 0, round(heading, 5))
+        elif does[0] == "turn_into" and adv["spawn"]["relation"].startswith("roadside"):
+            net = net or _road_network(xodr_bytes)
+            ctx.crossing_path, ctx.crossing_distance_m = _turn_in_path(net, pose, ego_pose.lane_id)
+            x, y, heading = ctx.crossing_path[0]
+            position = xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(heading, 5))
         else:
             position = _lane_position(pose)
         if controller is not None:
@@ -433,6 +438,22 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         creation_date=dt.datetime(1970, 1, 1),
     )
     return WrittenScenario(render(scenario), xodr_bytes, [a["name"] for a in layers["adversaries"]])
+
+
+def _turn_in_path(net: RoadNetwork, pose: placement.Pose, ego_lane_id: int) -> tuple[list, float]:
+    """(world points with headings of the way a road user standing beside the ego's road at ``pose``
+    turns into the ego's lane, its distance across to that lane's centre (m)): the path of
+    :func:`~vei_scenario.language.behaviours.turn_into.roadside_path_st`, from facing across the road
+    to facing the ego's way. Why a path: it comes onto the road across the kerb line, where no lane
+    change can start, and from the far side it must turn to face the ego's way, not drive its lane's."""
+    from vei_scenario.language.behaviours.turn_into import roadside_path_st
+
+    road = net.road(pose.road)
+    t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
+    t_lane = road.lane_center_t(pose.s, ego_lane_id)
+    points = [road.world(s, t)[:2] for s, t in roadside_path_st(pose.s, t0, t_lane)]
+    headings = [math.atan2(q[1] - p[1], q[0] - p[0]) for p, q in zip(points, points[1:])]
+    return [(x, y, h) for (x, y), h in zip(points, headings + headings[-1:])], abs(t_lane - t0)
 
 
 def _own_exits(info: maps.MapInfo, road: str) -> dict[str, str]:

@@ -587,6 +587,7 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     # noun, then "on my left"
     k = j
     kind = None
+    place = None
     if tokens[k] in _MINOR and k + 1 < n and tokens[k + 1] in _ROAD_NOUNS:
         kind, k = "arm", k + 2
     elif tokens[k] in ARM_NOUNS or (tokens[k] == "junction" and prep in _OUT_OF | {"at"}):
@@ -595,6 +596,7 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "kerb", k + 1
     elif prep in _OUT_OF and (head := _place_head(tokens, k)) is not None:
         kind, k = "place", head
+        place = tokens[head - 1]  # (its head: "driveway", "gate", "stop", "park" of "car park")
     elif prep in ("at", "in") and _in_a_state(tokens, i) and (head := _place_head(tokens, k)) is not None:
         kind, k = "waits", head  # ("a bus standing at a stop on the left": beside the road there)
     elif tokens[k] in _KERB_LANES and tokens[k + 1 : k + 2] == ["lane"]:
@@ -606,7 +608,7 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     sided = k < n and tokens[k] in _LINKS and _side_follows(tokens, k + 1)
     if kind == "place" and not sided and not _reversing(tokens, i):
         near = "left" if left_hand else "right"  # ("pulled out from the stop": beside the writer's near kerb)
-        return Said(start, k, prep, (("kerb", None), ("place", None), ("relation", f"roadside_{near}")))
+        return Said(start, k, prep, (("kerb", None), ("place", place), ("relation", f"roadside_{near}")))
     if kind is None or k >= n or tokens[k] not in _LINKS:
         return None
     m = _past_owner(tokens, k + 1)
@@ -628,7 +630,7 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         if _reversing(tokens, i):  # (it backs across into the lane on that side: no pulling out ahead)
             return Said(start, end, prep, (("kerb", None), ("lane_side", side)))
         return Said(
-            start, end, prep, (("kerb", None), ("place", None), ("lane_side", side), ("relation", f"roadside_{side}"))
+            start, end, prep, (("kerb", None), ("place", place), ("lane_side", side), ("relation", f"roadside_{side}"))
         )
     return Said(start, end, prep, (("lane_side", side),))
 

@@ -78,8 +78,9 @@ class ActorContext:
     #: (road id, s at its junction end) of the actor's approach, and the road a turn leads to
     exits: dict[str, str] = field(default_factory=dict)
     junction_end_s_m: float | None = None
-    #: For crossing behaviours: the path across the ego's road as world points, and the actor's
-    #: distance to the ego's lane centre along it (m); the ego's distance to the conflict (m).
+    #: For crossing behaviours (and a turn into the road from beside it): the path across the ego's
+    #: road as world points, and the actor's distance to the ego's lane centre along it (m); the ego's
+    #: distance to the conflict (m).
     crossing_path: list[tuple[float, float, float]] | None = None
     crossing_distance_m: float | None = None
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)

@@ -1,11 +1,31 @@
 """turn into: a road user waiting in a side road pulls out of it into the ego's road, ahead of the
 ego and in its direction (from the left it turns left across the near half, from the right it turns
 right). It sets off when the ego is close enough that the ego reaches the point where it joins
-``arrival_gap_s`` after it, then drives on to ``speed_mps``."""
+``arrival_gap_s`` after it, then drives on to ``speed_mps``.
+
+One that waits beside the ego's road instead (a spawn on a roadside: it comes out of a driveway, a
+field gate, a car park) has no side road to drive along: it stands off the road facing it, and turns
+out across the kerb line along a path (:func:`roadside_path_st`) that ends in the ego's lane, in the
+ego's direction (from the far side across the oncoming lanes first); there it drives on along the
+lane. Its timing is the same: the ego reaches where it joins ``arrival_gap_s`` after it."""
 
 from __future__ import annotations
 
-from vei_scenario.language.behaviours.base import ActorContext, Parameter, Step, time_to_cover, value
+import math
+from dataclasses import replace
+
+from scenariogeneration import xosc
+
+from vei_scenario.language.behaviours.base import (
+    ActorContext,
+    Condition,
+    Parameter,
+    Step,
+    route_action,
+    speed_action,
+    time_to_cover,
+    value,
+)
 from vei_scenario.language.behaviours.junction_entry import (
     RING_ARM_END_M,
     RING_QUARTER_M,
@@ -33,6 +53,8 @@ PROFILES = {
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    if ctx.crossing_path is not None:  # (the writer's path out of a place beside the road)
+        return from_the_roadside(ctx, cfg)
     from_left = ctx.actor_road == ctx.exits.get("left")
     turn = "left" if from_left else "right"
     if ctx.actor_exits.get(turn) != ctx.exits.get("straight"):
@@ -112,3 +134,72 @@ def ego_distance_at_set_off_m(ego_speed_mps: float, t_actor_s: float, ego_path_m
     """How far before its junction entry the ego is when the road user sets off (m): it reaches
     where the road user joins ``arrival_gap_s`` after the road user's ``t_actor_s``."""
     return ego_speed_mps * (t_actor_s + arrival_gap_s) - ego_path_m
+
+
+#: How far along the road (m) a road user turning out of a place beside it at least goes while it turns
+#: into its lane (a tight turn out of a driveway); across a wider way it turns as wide as it goes over.
+TURN_OUT_MIN_M = 6.0
+#: How far (m) its path runs straight on in the ego's lane after the turn, before it keeps the lane on
+#: its own (a path ending on a lane hands the road user to the lane, as esmini does).
+SETTLE_M = 4.0
+#: Points of the path's turn.
+_TURN_POINTS = 12
+
+
+def roadside_path_st(s0: float, t0: float, t_lane: float) -> list[tuple[float, float]]:
+    """The path (s, t on the ego's road) of a road user turning out of a place beside the road at
+    (``s0``, ``t0``) into the lane whose centre is at ``t_lane``, in the road's direction of increasing
+    s (the ego's): a quarter ellipse from facing across the road to facing along it, then a short
+    straight in the lane. Why an ellipse: it leaves the roadside square to the kerb, as one out of a
+    drive does, and meets the lane tangent to it, so that the lane takes it over without a kink."""
+    b = t_lane - t0
+    a = max(abs(b), TURN_OUT_MIN_M)
+    turn = [
+        (s0 + a * (1.0 - math.cos(f)), t0 + b * math.sin(f))
+        for f in (math.pi / 2 * k / _TURN_POINTS for k in range(_TURN_POINTS + 1))
+    ]
+    return turn + [(s0 + a + SETTLE_M, t_lane)]
+
+
+def roadside_turn_m(lateral_m: float) -> tuple[float, float]:
+    """(the length of the turn of :func:`roadside_path_st` over ``lateral_m``, how far along the road it
+    goes meanwhile) (m)."""
+    pts = roadside_path_st(0.0, 0.0, lateral_m)[:-1]
+    return sum(math.dist(p, q) for p, q in zip(pts, pts[1:])), max(lateral_m, TURN_OUT_MIN_M)
+
+
+def roadside_trigger_m(
+    ego_speed_mps: float, lateral_m: float, cfg: dict, vehicle: tuple[float, float, float] = (0.0, 0.0, 0.0)
+) -> float:
+    """Free-space distance of the ego at which a road user beside the road ``lateral_m`` from the ego's
+    lane centre sets off to turn into it: the ego reaches where it joins ``arrival_gap_s`` after it
+    (its time to join by :func:`time_to_join_s`, ``vehicle`` its length, top speed and acceleration,
+    less how far along it has gone by then). Why one helper: the writer's trigger and the sampler's
+    spawn (far enough ahead for the ego to close in first) must agree."""
+    turn_m, along_m = roadside_turn_m(lateral_m)
+    t_actor = time_to_join_s(turn_m, cfg, *vehicle)
+    return max(1.0, ego_speed_mps * (t_actor + value(cfg, PARAMETERS, "arrival_gap_s")) - along_m)
+
+
+#: Below this speed (m/s) the ego stands: a turn in timed to meet it would wait for it for ever.
+EGO_AT_REST_MPS = 0.5
+
+
+def from_the_roadside(ctx: ActorContext, cfg: dict) -> list[Step]:
+    """Turn out of a place beside the road along the writer's path (``ctx.crossing_path``, world
+    points of :func:`roadside_path_st`) into the ego's lane, speeding up to ``speed_mps``; set off
+    when the ego is :func:`roadside_trigger_m` away (in front of a standing ego: at once)."""
+    traj = xosc.Trajectory(f"{ctx.actor}_turn_in", False)
+    points = [xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(h, 5)) for x, y, h in ctx.crossing_path or []]
+    traj.add_shape(xosc.Polyline([], points))
+    ctx.trajectories[traj.name] = traj
+    v, a = ctx.reachable(value(cfg, PARAMETERS, "speed_mps"), value(cfg, PARAMETERS, "accel_mps2"))
+    actions = [xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position), speed_action(v, rate=a)]
+    if ctx.exits.get("straight"):  # (in the ego's lane it goes on straight over the junction ahead)
+        in_lane = replace(ctx, actor_lane_id=ctx.ego_lane_id, actor_s_m=ctx.ego_s_m)
+        actions.append(route_action(in_lane, "straight", exit_lane=abs(ctx.ego_lane_id)))
+    if ctx.ego_speed_mps < EGO_AT_REST_MPS:
+        return [Step(NAME, actions)]
+    vehicle = (ctx.actor_length_m, ctx.actor_max_speed_mps, ctx.actor_max_accel_mps2)
+    trigger = roadside_trigger_m(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, cfg, vehicle)
+    return [Step(NAME, actions, conditions=[Condition("ego_within", round(trigger, 2))])]
