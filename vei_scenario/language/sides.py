@@ -1501,7 +1501,7 @@ def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at
 #: one of these, after a verb that does not say a heading, "right" means "just". ("right across", "right
 #: at" are read with the verb before them, by the reader's own list.)
 _STRESSED = frozenset(
-    {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along",
+    {"out", "up", "into", "across", "onto", "through", "over", "past", "under", "off", "down", "along",
      "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on", "by"}
 )  # fmt: skip
 #: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
@@ -1521,7 +1521,7 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     of other classes, and read as a side they place a road user on the wrong side or turn the ego:
 
     - "right" stressing a particle or preposition ("pulled right out", "came right up behind me", "ran
-      right past my mirror"): unless a determiner or preposition says it is a place ("to the
+      right past my mirror", "rode right across the front of my car"): unless a determiner or preposition says it is a place ("to the
       right across the road") or the verb before says a heading ("turned right into the side road");
     - "left" the past of "leave", after a subject or a perfect auxiliary and before what was left ("as we
       left the roundabout", "she had just left the car park"), never after a determiner ("on the left
