@@ -97,3 +97,39 @@ def test_right_stressing_across_is_no_side(text: str, kind: str) -> None:
 def test_a_heading_right_across_stays_a_side(text: str, want: tuple) -> None:
     """A verb of heading keeps its "right" ("swerved right across", "turned right across")."""
     assert _acts(text) == [want]
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("A pedestrian went straight across the road in front of the ego at 20 m.", "pedestrian"),
+        ("A lad came off the pavement and went straight across the road in front of me.", "pedestrian"),
+        ("Cyclist came straight across the front of my car, I had to brake.", "bicycle"),
+        ("A kid on a scooter went straight across in front of us, missed him by a foot.", "e-scooter"),
+        ("A woman with a pram went straight across our path while I was doing 25 mph.", "pedestrian"),
+    ],
+)
+def test_straight_across_crosses(text: str, kind: str) -> None:
+    """"Went straight across" is "went across", "straight" saying only how directly: a crossing, not the
+    plain going the lexicon's "go straight" (the ego's route) would make it."""
+    assert [(k, names) for k, names, _ in _acts(text)] == [(kind, ["cross_in_front"])]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist went straight across the junction ahead of me.",
+        "The car went straight across the junction without stopping and hit me.",
+        "A cyclist went straight on along the road ahead of me.",
+    ],
+)
+def test_straight_through_a_junction_or_on_is_no_crossing(text: str) -> None:
+    """Straight across a junction is through it, a vehicle's going straight across is other rules', and
+    going straight on is going along."""
+    assert all("cross_in_front" not in names for _, names, _ in _acts(text))
+
+
+def test_the_ego_going_straight_across_keeps_its_route() -> None:
+    """The ego's "went straight across the junction" stays its route straight on."""
+    reading = read("I went straight across the junction at 30 when a van pulled out from the left.")
+    assert reading.ego_route == "straight"

@@ -1521,8 +1521,9 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     of other classes, and read as a side they place a road user on the wrong side or turn the ego:
 
     - "right" stressing a particle or preposition ("pulled right out", "came right up behind me", "ran
-      right past my mirror", "rode right across the front of my car"): unless a determiner or preposition says it is a place ("to the
-      right across the road") or the verb before says a heading ("turned right into the side road");
+      right past my mirror", "rode right across the front of my car"): unless a determiner or
+      preposition says it is a place ("to the right across the road") or the verb before says a
+      heading ("turned right into the side road");
     - "left" the past of "leave", after a subject or a perfect auxiliary and before what was left ("as we
       left the roundabout", "she had just left the car park"), never after a determiner ("on the left
       the van") or a heading verb ("turn left the moment ...")."""
