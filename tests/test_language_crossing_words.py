@@ -110,7 +110,7 @@ def test_a_heading_right_across_stays_a_side(text: str, want: tuple) -> None:
     ],
 )
 def test_straight_across_crosses(text: str, kind: str) -> None:
-    """"Went straight across" is "went across", "straight" saying only how directly: a crossing, not the
+    """ "Went straight across" is "went across", "straight" saying only how directly: a crossing, not the
     plain going the lexicon's "go straight" (the ego's route) would make it."""
     assert [(k, names) for k, names, _ in _acts(text)] == [(kind, ["cross_in_front"])]
 
