@@ -1506,6 +1506,8 @@ _STRESSED = frozenset(
 )  # fmt: skip
 #: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
 _HEADING = frozenset({"turn", "veer", "swerve", "steer", "swing", "bear", "head", "move", "merge", "drift", "keep"})
+#: Verbs whose side before "across" is the way the move across goes ("cut right across my lane").
+_CUT_ACROSS = frozenset({"cut"})
 #: Words before a side that make it a place ("to the right", "on my right", "from right across").
 _SIDE_OPENERS = _DETERMINERS | _OPENING | {"'s", "hand", "far", "hard", "sharp", "slightly"}
 #: Subjects and perfect auxiliaries "left" the verb follows ("as we left", "she had just left").
@@ -1533,7 +1535,8 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     if word == "right":
         if nxt not in _STRESSED or not prev or prev in _SIDE_OPENERS:
             return False
-        return not (set(lemmas(prev).get("VERB", ())) & _HEADING)
+        heading = _HEADING | _CUT_ACROSS if nxt == "across" else _HEADING
+        return not (set(lemmas(prev).get("VERB", ())) & heading)
     if word == "left":
         return prev in _LEAVERS and nxt in _LEFT_OBJECTS
     return False
