@@ -133,3 +133,25 @@ def test_the_ego_going_straight_across_keeps_its_route() -> None:
     """The ego's "went straight across the junction" stays its route straight on."""
     reading = read("I went straight across the junction at 30 when a van pulled out from the left.")
     assert reading.ego_route == "straight"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A woman was on the zebra when I came round the corner at 25 mph and I had to brake hard.",
+        "An old man was halfway over the zebra as I approached at 20 mph.",
+        "Lady with a pushchair on the zebra, van didn't stop, went straight past her at 30.",
+        "Ego 30 km/h; a pedestrian on the pelican 20 m ahead.",
+        "There was a boy on the puffin when I came up to it at 20 mph.",
+    ],
+)
+def test_on_a_crossing_named_by_its_kind_alone_crosses(text: str) -> None:
+    """A foot crossing named by its kind alone ("the zebra", "the pelican") is the crossing: a walker on
+    or halfway over it is crossing on it, as on "the zebra crossing"."""
+    assert [(k, names) for k, names, _ in _acts(text)] == [("pedestrian", ["cross_in_front"])]
+
+
+def test_waiting_at_a_crossing_named_by_its_kind_is_no_crossing() -> None:
+    """Waiting at the puffin for the green man is no crossing."""
+    acts = _acts("A man stood at the puffin waiting for the green man while I drove past at 30.")
+    assert all("cross_in_front" not in names for _, names, _ in acts)

@@ -2239,8 +2239,9 @@ def with_a_thing_out_into_the_road(clauses: list, tokens: list[str]) -> list:
 
 #: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
 _FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan"))
-#: Prepositions that put a road user in the crossing itself, out on the road (not "at" or "by" it).
-_IN_IT = frozenset(("in", "on", "onto", "into", "across"))
+#: Prepositions that put a road user in the crossing itself, out on the road ("halfway over the zebra"; not
+#: "at" or "by" it).
+_IN_IT = frozenset(("in", "on", "onto", "into", "across", "over"))
 
 
 def _preposition_before(tokens: list[str], start: int) -> str:
