@@ -991,6 +991,12 @@ KERB = (
     "pelican crossing",
     "puffin crossing",
     "toucan crossing",
+    "pegasus crossing",
+    # (the crossings said by their kind alone: "on the zebra", "at the pelican")
+    "zebra",
+    "pelican",
+    "puffin",
+    "toucan",
     "crosswalk",
     "bike lane",
     "cycle lane",

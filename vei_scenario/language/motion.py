@@ -1525,6 +1525,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
         passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
+    clauses = straight_across(clauses, tokens)
     clauses = with_a_thing_out_into_the_road(out_across_the_road(clauses, tokens), tokens)
     clauses = on_a_foot_crossing(out_of_a_place_then_across(clauses), tokens)
     clauses = out_of_the_ego_lane(into_a_lane(into_another_lane(clauses, tokens), tokens), tokens)
@@ -2093,6 +2094,37 @@ def out_into_the_road(clauses: list, tokens: list[str]) -> list:
     return out
 
 
+#: Junctions: going straight across one is going through it, no crossing of the ego's road.
+_THROUGH_A_JUNCTION = frozenset(("crossroad", "roundabout"))
+
+
+def straight_across(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a walker's or rider's plain going said with "straight" and then "across" ("went
+    straight across the road in front of me", "came straight across the front of my car") read as the
+    crossing that "went across" is: the lexicon's "go straight" (how the ego says its route) takes the
+    adverb before the particle can, and "straight" only says how directly it crosses. Not read so: a
+    vehicle (one that goes straight across keeps its road, or runs through a junction: other rules),
+    the ego, and going straight across a junction or roundabout (through it)."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(kept):
+            if m.slot != "behaviour" or m.value[0] not in _PLAIN_MOVES or m.words.split()[-1] != "straight":
+                continue
+            if tokens[m.end : m.end + 1] != ["across"]:
+                continue
+            subject = next((x for x in reversed(kept[:k]) if x.slot == "actor"), None)
+            if subject is None or subject.value not in _CROSSERS | {"unknown"}:
+                continue
+            crossed = next((x for x in kept[k + 1 :] if x.start > m.end), None)
+            if crossed is not None and crossed.slot == "map" and crossed.value in _THROUGH_A_JUNCTION:
+                if crossed.start <= m.end + 3:
+                    continue  # ("went straight across the junction": through it)
+            kept[k] = replace(m, value=("cross_in_front", {}))
+        out.append((link, kept))
+    return out
+
+
 #: Words that join a verbless second half to the first ("ran along the pavement and out into the road").
 _JOINS = frozenset(("and", "then", ","))
 
@@ -2207,8 +2239,9 @@ def with_a_thing_out_into_the_road(clauses: list, tokens: list[str]) -> list:
 
 #: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
 _FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan"))
-#: Prepositions that put a road user in the crossing itself, out on the road (not "at" or "by" it).
-_IN_IT = frozenset(("in", "on", "onto", "into", "across"))
+#: Prepositions that put a road user in the crossing itself, out on the road ("halfway over the zebra"; not
+#: "at" or "by" it).
+_IN_IT = frozenset(("in", "on", "onto", "into", "across", "over"))
 
 
 def _preposition_before(tokens: list[str], start: int) -> str:

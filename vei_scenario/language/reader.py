@@ -592,6 +592,21 @@ def _plain_modifier(word: str, read_words: bool = False) -> bool:
 _POINTING_BACK = frozenset(("the", "this", "that", "its", "our", "my", "their", "his", "her"))
 
 
+def _before_a_described_place(tokens: list[str], i: int) -> str | None:
+    """The word before the noun phrase of a place at ``i`` whose determiner stands apart from its noun
+    by a word or two that describe it ("off the dropped kerb", "along the busy pavement", "from the
+    opposite footpath": "off", "along", "from"), or None where no such words stand between. Why: the
+    preposition that governs the phrase says whether its road user comes off the place or goes along
+    it, whatever the phrase says of the place; a verb right before the determiner ("hugging the kerb")
+    is no describing word, and is left as it was."""
+    j = i - 1
+    while j > 0 and i - j <= _MODIFIERS_BEFORE and tokens[j] not in _DETERMINERS and _plain_modifier(tokens[j], True):
+        j -= 1
+    if j == i - 1 or j < 1 or tokens[j] not in _DETERMINERS:
+        return None
+    return tokens[j - 1]
+
+
 def _phrase_determiner(tokens: list[str], i: int) -> str:
     """The determiner that points back from the start of the noun phrase of the road-user noun at
     ``i``, past a few plain modifiers ("the white van", "the injured cyclist", "this grey Golf"):
@@ -920,7 +935,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                 key = key[:1]
         adverb = toward_at = None  # (toward_at: where the side it moves to is said)
         just_right = tokens[i + 1 : i + 2] == ["right"] and tokens[i + 2 : i + 3] and tokens[i + 2] in _RIGHT_BEFORE
-        stressed = not just_right and i + 2 < len(tokens) and sides.not_a_side(tokens, i + 1)
+        stressed = (not just_right or tokens[i + 2 : i + 3] == ["across"]) and i + 2 < len(tokens)
+        stressed = stressed and sides.not_a_side(tokens, i + 1)  # ("rode right across": a stressed particle)
         just_right = just_right or stressed
         if (
             (key is None or len(key) == 1)
@@ -1167,6 +1183,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
                                            i + used, det))  # fmt: skip
         elif slot != "noise":
             det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the injured cyclist")
+            if slot in ("kerb", "kerb_side"):
+                prev = _before_a_described_place(tokens, i) or prev  # ("off the dropped kerb": "off")
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]

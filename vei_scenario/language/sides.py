@@ -1503,11 +1503,13 @@ def place_after_degree(tokens: list[str], i: int, key: tuple[str, ...], place_at
 #: one of these, after a verb that does not say a heading, "right" means "just". ("right across", "right
 #: at" are read with the verb before them, by the reader's own list.)
 _STRESSED = frozenset(
-    {"out", "up", "into", "onto", "through", "over", "past", "under", "off", "down", "along",
+    {"out", "up", "into", "across", "onto", "through", "over", "past", "under", "off", "down", "along",
      "round", "around", "beside", "alongside", "away", "back", "behind", "toward", "towards", "in", "on", "by"}
 )  # fmt: skip
 #: Verbs whose "left"/"right" is the way they head ("turned right into", "swerved right onto").
 _HEADING = frozenset({"turn", "veer", "swerve", "steer", "swing", "bear", "head", "move", "merge", "drift", "keep"})
+#: Verbs whose side before "across" is the way the move across goes ("cut right across my lane").
+_CUT_ACROSS = frozenset({"cut"})
 #: Words before a side that make it a place ("to the right", "on my right", "from right across").
 _SIDE_OPENERS = _DETERMINERS | _OPENING | {"'s", "hand", "far", "hard", "sharp", "slightly"}
 #: Subjects and perfect auxiliaries "left" the verb follows ("as we left", "she had just left").
@@ -1523,8 +1525,9 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     of other classes, and read as a side they place a road user on the wrong side or turn the ego:
 
     - "right" stressing a particle or preposition ("pulled right out", "came right up behind me", "ran
-      right past my mirror"): unless a determiner or preposition says it is a place ("to the
-      right across the road") or the verb before says a heading ("turned right into the side road");
+      right past my mirror", "rode right across the front of my car"): unless a determiner or
+      preposition says it is a place ("to the right across the road") or the verb before says a
+      heading ("turned right into the side road");
     - "left" the past of "leave", after a subject or a perfect auxiliary and before what was left ("as we
       left the roundabout", "she had just left the car park"), never after a determiner ("on the left
       the van") or a heading verb ("turn left the moment ...")."""
@@ -1534,7 +1537,8 @@ def not_a_side(tokens: list[str], i: int) -> bool:
     if word == "right":
         if nxt not in _STRESSED or not prev or prev in _SIDE_OPENERS:
             return False
-        return not (set(lemmas(prev).get("VERB", ())) & _HEADING)
+        heading = _HEADING | _CUT_ACROSS if nxt == "across" else _HEADING
+        return not (set(lemmas(prev).get("VERB", ())) & heading)
     if word == "left":
         return prev in _LEAVERS and nxt in _LEFT_OBJECTS
     return False
