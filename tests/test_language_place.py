@@ -282,3 +282,57 @@ def test_a_side_said_after_the_place_it_names(text, expected):
 
 def test_a_junction_said_only_as_where_the_ego_is_names_no_side():
     assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"
+
+
+# an exit said as where a road user goes with an ordinal or an adjective before it ("to take the next
+# exit", "heading for the 2nd exit", "to get to the same exit as me"), or said as where it does not go
+# ("not exiting", "without taking the exit"), is no arm it comes out of: it starts beside the ego
+EXIT_GONE_TO_PAST_ITS_MODIFIERS = [
+    (
+        "On the roundabout at 20 mph a cyclist in the cycle lane on my left swerved across my bonnet to get "
+        "to the second exit.",
+        "left",
+    ),
+    (
+        "Going round the roundabout in the right lane, a taxi in the left lane cut in front of us to take the "
+        "next exit.",
+        "left",
+    ),
+    (
+        "On the roundabout, ego circulating at 25 km/h; a van on our right cuts across us heading for the 2nd exit.",
+        "right",
+    ),
+    ("At the roundabout a motorbike on my left swerved in front of me towards the third exit.", "left"),
+    (
+        "Mini-roundabout, 15 mph: a taxi beside me in the right-hand lane swung over in front of me to make the "
+        "same exit as me.",
+        "right",
+    ),
+    (
+        "Roundabout, 2 lanes, ego takes the 1st exit at 20 km/h; a car in the lane on the ego's left keeps "
+        "going round, not exiting.",
+        "left",
+    ),
+    (
+        "Ego on the roundabout at 30 km/h, a cyclist in the cycle lane on my right carried on round without "
+        "taking the next exit.",
+        "right",
+    ),
+]
+
+
+@pytest.mark.parametrize("text, side", EXIT_GONE_TO_PAST_ITS_MODIFIERS)
+def test_an_exit_gone_to_past_an_ordinal_is_no_arm_it_comes_from(text, side):
+    assert _side_started(text) == side, relation(text)
+
+
+# near misses: an exit or entry said as where a road user comes out of or from, ordinal or not, is its arm
+EXIT_COME_FROM = [
+    ("At the roundabout, ego 30 km/h, a van pulls out of the second exit on our left in front of us.", "junction_left"),
+    ("On the roundabout at 20 mph a lorry came out from the next entry on my right.", "junction_right"),
+]
+
+
+@pytest.mark.parametrize("text, expected", EXIT_COME_FROM)
+def test_an_exit_come_from_past_an_ordinal_is_still_its_arm(text, expected):
+    assert relation(text) == expected
