@@ -336,3 +336,16 @@ EXIT_COME_FROM = [
 @pytest.mark.parametrize("text, expected", EXIT_COME_FROM)
 def test_an_exit_come_from_past_an_ordinal_is_still_its_arm(text, expected):
     assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 20 mph, a cyclist ahead of me suddenly swung right into the second side road on the right.",
+        "Ego 30 km/h; the scooter in front of us turns left into the next side street without signalling.",
+    ],
+)
+def test_a_side_road_turned_into_past_an_ordinal_is_where_the_one_ahead_goes(text):
+    """ "into the second side road": where the road user ahead turns off, not an arm it comes out of."""
+    actor = read(text).actors[0]
+    assert actor.relation == "ahead" and actor.behaviours[0][0] == "forced_turn", actor.relation
