@@ -349,3 +349,32 @@ def test_a_side_road_turned_into_past_an_ordinal_is_where_the_one_ahead_goes(tex
     """ "into the second side road": where the road user ahead turns off, not an arm it comes out of."""
     actor = read(text).actors[0]
     assert actor.relation == "ahead" and actor.behaviours[0][0] == "forced_turn", actor.relation
+
+
+# a test line's or a terse note's side in brackets right after the place a road user comes out of
+# ("pulls out of stop (left)", "out of a parking space (R)") is that place's side, as "on the left" is
+PLACE_SIDE_IN_BRACKETS = [
+    ("Ego 40 km/h, bus pulls out of stop (left) 25 m ahead.", "roadside_left"),
+    ("Ego 40 km/h, a car pulls out of a parking space (L) 20 m ahead.", "roadside_left"),
+    ("ego 30 mph; delivery van pulls out of a loading bay (right), 15 m ahead", "roadside_right"),
+    ("Ego 30 mph. Coach pulls out of the bus stop (right-hand) and merges in front of ego.", "roadside_right"),
+    ("At 30 km/h a taxi pulled out of the lay-by (L) right in front of me.", "roadside_left"),
+]
+
+
+@pytest.mark.parametrize("text, expected", PLACE_SIDE_IN_BRACKETS)
+def test_a_side_in_brackets_after_a_place_is_its_side(text, expected):
+    assert relation(text) == expected
+
+
+# near misses: a bracket that says something else (a name, a note) leaves the writer's near kerb, and so
+# does a side in brackets that is not right after the place
+PLACE_BRACKET_NEAR_MISSES = [
+    ("Ego 40 km/h, bus pulls out of stop (route 12) 25 m ahead.", "roadside_right"),
+    ("Ego 40 km/h, bus pulls out of stop 25 m ahead (left lane closed).", "roadside_right"),
+]
+
+
+@pytest.mark.parametrize("text, expected", PLACE_BRACKET_NEAR_MISSES)
+def test_a_bracket_that_is_no_side_leaves_the_place_as_it_was(text, expected):
+    assert relation(text) == expected
