@@ -282,3 +282,99 @@ def test_a_side_said_after_the_place_it_names(text, expected):
 
 def test_a_junction_said_only_as_where_the_ego_is_names_no_side():
     assert relation("At the junction at 40 km/h, a car in the right lane slows down.") == "right"
+
+
+# an exit said as where a road user goes with an ordinal or an adjective before it ("to take the next
+# exit", "heading for the 2nd exit", "to get to the same exit as me"), or said as where it does not go
+# ("not exiting", "without taking the exit"), is no arm it comes out of: it starts beside the ego
+EXIT_GONE_TO_PAST_ITS_MODIFIERS = [
+    (
+        "On the roundabout at 20 mph a cyclist in the cycle lane on my left swerved across my bonnet to get "
+        "to the second exit.",
+        "left",
+    ),
+    (
+        "Going round the roundabout in the right lane, a taxi in the left lane cut in front of us to take the "
+        "next exit.",
+        "left",
+    ),
+    (
+        "On the roundabout, ego circulating at 25 km/h; a van on our right cuts across us heading for the 2nd exit.",
+        "right",
+    ),
+    ("At the roundabout a motorbike on my left swerved in front of me towards the third exit.", "left"),
+    (
+        "Mini-roundabout, 15 mph: a taxi beside me in the right-hand lane swung over in front of me to make the "
+        "same exit as me.",
+        "right",
+    ),
+    (
+        "Roundabout, 2 lanes, ego takes the 1st exit at 20 km/h; a car in the lane on the ego's left keeps "
+        "going round, not exiting.",
+        "left",
+    ),
+    (
+        "Ego on the roundabout at 30 km/h, a cyclist in the cycle lane on my right carried on round without "
+        "taking the next exit.",
+        "right",
+    ),
+]
+
+
+@pytest.mark.parametrize("text, side", EXIT_GONE_TO_PAST_ITS_MODIFIERS)
+def test_an_exit_gone_to_past_an_ordinal_is_no_arm_it_comes_from(text, side):
+    assert _side_started(text) == side, relation(text)
+
+
+# near misses: an exit or entry said as where a road user comes out of or from, ordinal or not, is its arm
+EXIT_COME_FROM = [
+    ("At the roundabout, ego 30 km/h, a van pulls out of the second exit on our left in front of us.", "junction_left"),
+    ("On the roundabout at 20 mph a lorry came out from the next entry on my right.", "junction_right"),
+]
+
+
+@pytest.mark.parametrize("text, expected", EXIT_COME_FROM)
+def test_an_exit_come_from_past_an_ordinal_is_still_its_arm(text, expected):
+    assert relation(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At 20 mph, a cyclist ahead of me suddenly swung right into the second side road on the right.",
+        "Ego 30 km/h; the scooter in front of us turns left into the next side street without signalling.",
+    ],
+)
+def test_a_side_road_turned_into_past_an_ordinal_is_where_the_one_ahead_goes(text):
+    """ "into the second side road": where the road user ahead turns off, not an arm it comes out of."""
+    actor = read(text).actors[0]
+    assert actor.relation == "ahead" and actor.behaviours[0][0] == "forced_turn", actor.relation
+
+
+# a test line's or a terse note's side in brackets right after the place a road user comes out of
+# ("pulls out of stop (left)", "out of a parking space (R)") is that place's side, as "on the left" is
+PLACE_SIDE_IN_BRACKETS = [
+    ("Ego 40 km/h, bus pulls out of stop (left) 25 m ahead.", "roadside_left"),
+    ("Ego 40 km/h, a car pulls out of a parking space (L) 20 m ahead.", "roadside_left"),
+    ("ego 30 mph; delivery van pulls out of a loading bay (right), 15 m ahead", "roadside_right"),
+    ("Ego 30 mph. Coach pulls out of the bus stop (right-hand) and merges in front of ego.", "roadside_right"),
+    ("At 30 km/h a taxi pulled out of the lay-by (L) right in front of me.", "roadside_left"),
+]
+
+
+@pytest.mark.parametrize("text, expected", PLACE_SIDE_IN_BRACKETS)
+def test_a_side_in_brackets_after_a_place_is_its_side(text, expected):
+    assert relation(text) == expected
+
+
+# near misses: a bracket that says something else (a name, a note) leaves the writer's near kerb, and so
+# does a side in brackets that is not right after the place
+PLACE_BRACKET_NEAR_MISSES = [
+    ("Ego 40 km/h, bus pulls out of stop (route 12) 25 m ahead.", "roadside_right"),
+    ("Ego 40 km/h, bus pulls out of stop 25 m ahead (left lane closed).", "roadside_right"),
+]
+
+
+@pytest.mark.parametrize("text, expected", PLACE_BRACKET_NEAR_MISSES)
+def test_a_bracket_that_is_no_side_leaves_the_place_as_it_was(text, expected):
+    assert relation(text) == expected

@@ -358,7 +358,7 @@ def destinations_not_origins(clauses: list, tokens: list[str] | None = None) -> 
         dropped = False
         for k, m in enumerate(mentions):
             before = mentions[k - 1] if k > 0 else None
-            wanted = tokens is not None and _wanted(tokens, m.start)
+            wanted = tokens is not None and (_wanted(tokens, m.start) or _gone_to(tokens, m.start))
             if m.slot == "arm" and (wanted or _led_towards(m, before, mentions[k - 2] if k > 1 else None)):
                 drop_side = dropped = True
                 if kept and kept[-1] is before and before.slot in ("pronoun", "member"):
@@ -778,6 +778,49 @@ def _wanted(tokens: list[str], start: int) -> bool:
     while i >= 0 and start - i <= 3 and not lemmas(tokens[i]).get("VERB"):
         i -= 1
     return i >= 0 and start - i <= 3 and bool(set(lemmas(tokens[i]).get("VERB", ())) & _WANTING)
+
+
+#: Words that may stand between a word of going and the exit gone to: determiners, possessives,
+#: ordinals and the adjectives that pick one exit of several ("the next", "its 3rd", "the same").
+_EXIT_MODIFIERS = frozenset(
+    ("the", "a", "an", "its", "his", "her", "their", "my", "our", "your", "this", "that")
+    + ("first", "second", "third", "fourth", "fifth", "sixth", "last", "next", "same", "other", "nearest")
+    + ("following", "correct", "wrong", "right", "left", "own", "upcoming")
+)
+#: Words that say an arm is where one does not go ("not exiting", "without taking the exit").
+_NOT = frozenset(("not", "never", "without", "n't"))
+
+
+def _ordinal(tokens: list[str], i: int) -> bool:
+    """Whether token ``i`` is part of an ordinal written in figures ("2nd", or "2" "nd" as split)."""
+    word = tokens[i]
+    return bool(re.fullmatch(r"\d+(st|nd|rd|th)?", word)) or (
+        word in ("st", "nd", "rd", "th") and i > 0 and tokens[i - 1].isdigit()
+    )
+
+
+def _gone_to(tokens: list[str], start: int) -> bool:
+    """Whether the arm mention starting at ``start`` is where a road user goes, past the words that pick
+    one exit of several ("to take the next exit", "heading for the 2nd exit", "to get to the same exit"),
+    or where it is said not to go ("continuing round, not exiting", "without taking the exit"): the word
+    that governs it is then "for"/"towards"/"into"/"onto", "to" after a verb ("get to"), a verb after
+    "to" (a purpose: "to take"), or a negation. "Out of the next exit", "from the 2nd entry" are where
+    it comes from and stay."""
+    i = start - 1
+    while i >= 0 and start - i <= 4 and (tokens[i] in _EXIT_MODIFIERS or _ordinal(tokens, i)):
+        i -= 1
+    if i < 0:
+        return False
+    word, before = tokens[i], tokens[i - 1] if i > 0 else ""
+    if word in _NOT or (before in _NOT and "VERB" in lemmas(word)):  # ("not exiting", "not taking the exit")
+        return True
+    if i == start - 1:
+        return False  # (nothing picked between: the plain cases are read by _led_towards)
+    if word in _TOWARDS or word in _MAKING_FOR:
+        return True
+    if word == "to":
+        return before not in ("up", "down", "next", "close") and "VERB" in lemmas(before)
+    return before == "to" and "VERB" in lemmas(word)
 
 
 def _led_towards(m, before, earlier=None) -> bool:

@@ -785,6 +785,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         (typed, read) for typed, read in zip(_tokens(text, spell=False, brackets=True), tokens) if typed != read
     ]
     framed: list[str] = []
+    tokens = sides.place_sides_in_brackets(tokens)  # ("pulls out of stop (left)": on the left)
     tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")

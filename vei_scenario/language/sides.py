@@ -80,6 +80,44 @@ def _place_head(tokens: list[str], k: int) -> int | None:
     return None
 
 
+#: A plain side as a test line or a terse note writes it in brackets ("(left)", "(R)", "(right-hand)").
+_BRACKETED_SIDES = {
+    "left": "left",
+    "right": "right",
+    "l": "left",
+    "r": "right",
+    "left-hand": "left",
+    "right-hand": "right",
+}
+
+
+def place_sides_in_brackets(tokens: list[str]) -> list[str]:
+    """``tokens`` with a side in brackets right after a place beside the road said as "on the" side:
+    "pulls out of stop (left)", "a parking space (R)" read as "... on the left", "... on the right".
+    Why: a test line or a terse note says the side of the place so; the brackets go before the sides
+    are read, and the place was then put at the writer's near kerb. Only a place's head right before
+    the bracket counts (not a side in brackets after an exit, which says the ego's turn)."""
+    out: list[str] = []
+    k, n = 0, len(tokens)
+    while k < n:
+        side = _BRACKETED_SIDES.get(tokens[k + 1]) if k + 2 < n and tokens[k] == "(" and tokens[k + 2] == ")" else None
+        if side is not None and out and _ends_a_place(out):
+            out += ["on", "the", side]
+            k += 3
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
+
+
+def _ends_a_place(words: list[str]) -> bool:
+    """Whether ``words`` end with the head of a place beside the carriageway ("stop", "car park")."""
+    if words[-1] in OFF_ROAD_PLACES:
+        return True
+    return any(len(words) > len(tail) and words[-1 - len(tail)] == head and words[-len(tail) :] == tail
+               for head, tails in _PLACE_HEADS.items() for tail in tails)  # fmt: skip
+
+
 def _in_a_state(tokens: list[str], i: int) -> bool:
     """Whether the word before the preposition at token ``i`` says where a road user is rather than
     where it arrives: a participle of state or its own noun ("a bus standing at a stop", "a van
