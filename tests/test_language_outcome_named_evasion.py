@@ -65,3 +65,30 @@ NOT_AN_ESCAPE = [
 @pytest.mark.parametrize(("text", "want"), NOT_AN_ESCAPE)
 def test_no_escape_where_none_is_told(text: str, want: str | None) -> None:
     assert _intent(text) == want
+
+
+# a "clear" listed after the weather or the time of day is the sky, not a verdict on the pass
+SKY_CLEAR = [
+    "Run 12. A cyclist crosses from the right, the ego brakes hard. No contact. Morning, clear.",
+    "Shot 3: the scooter cuts across the bus, the driver brakes hard, no contact. Dusk, dry, clear.",
+    "Conditions: afternoon, clear. A boy ran out between cars and I swerved.",
+    "Night, clear. A van cut in front of me and I braked hard.",
+    "Weather dry, sunny, clear. The cyclist pulled out and I had to brake hard.",
+]
+
+
+@pytest.mark.parametrize("text", SKY_CLEAR)
+def test_clear_after_the_weather_is_the_sky(text: str) -> None:
+    assert _intent(text) == "near_miss"
+
+
+# "Clear." as the writer's own word on the pass is still a safe pass
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A rider came up on my left at the lights, I waited for him to go. Clear.",
+        "Held back behind the cyclist until the bend was done, then went round her. Clean, clear.",
+    ],
+)
+def test_clear_as_a_verdict_is_a_safe_pass(text: str) -> None:
+    assert _intent(text) == "safe"

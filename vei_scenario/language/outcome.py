@@ -1946,7 +1946,12 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in ("close", "closely") and _passed_close(before, words[i + 1 : i + 3]):
                 add("close")  # ("overtook us really close", "went by far too close")
                 continue
-            if len(words) == 1 and w in ("clean", "close", "tight") or (words == ["clear"] and ends_sentence):
+            sky = words == ["clear"] and n > 0 and not clause.first_of_sentence and _conditions(clauses[n - 1].words)
+            if (
+                len(words) == 1
+                and w in ("clean", "close", "tight")
+                or (words == ["clear"] and ends_sentence and not sky)
+            ):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
@@ -1978,6 +1983,19 @@ def outcome_cues(said: str) -> list[Cue]:
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
     return cues
+
+
+@lru_cache(maxsize=1)
+def _condition_words() -> frozenset[str]:
+    """The one-word names of the weather and the time of day in the lexicon ("dry", "overcast", "dusk")."""
+    phrases = [p for ps in (*L.WEATHER.values(), *L.TIMES.values()) for p in ps]
+    return frozenset(p for p in phrases if " " not in p)
+
+
+def _conditions(words: list[str]) -> bool:
+    """Whether the clause ``words`` only names the weather or the time of day ("Morning", "dry, bright"):
+    a "clear" listed after it is the sky ("Morning, clear."), not a verdict on the pass ("Clear.")."""
+    return bool(words) and all(w in _condition_words() for w in words)
 
 
 #: Conjunctions of a time reached ("went once it was clear", "passed when the road was clear").
