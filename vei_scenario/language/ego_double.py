@@ -47,7 +47,7 @@ from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
 #: What a road user does that puts it in the ego's path, for the ego to stop for: crossing, cutting in,
 #: turning or pulling out across it, coming the wrong way, braking hard ahead of it.
-_IN_THE_PATH = frozenset(
+IN_THE_PATH = frozenset(
     (
         "cross_in_front",
         "cut_in",
@@ -166,7 +166,7 @@ def stops_for_someone(spec: ActorSpec, specs: list) -> bool:
     its way ("the bus stops at a bus stop and a pedestrian walks out in front of it": it stopped for
     its own reason, and stands there) may be standing there, a road user of its own."""
     earlier = specs[: next(k for k, s in enumerate(specs) if s is spec)]
-    return any(b[0] in _IN_THE_PATH for s in earlier for b in s.behaviours)
+    return any(b[0] in IN_THE_PATH for s in earlier for b in s.behaviours)
 
 
 def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = ()) -> bool:

@@ -1946,7 +1946,12 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in ("close", "closely") and _passed_close(before, words[i + 1 : i + 3]):
                 add("close")  # ("overtook us really close", "went by far too close")
                 continue
-            if len(words) == 1 and w in ("clean", "close", "tight") or (words == ["clear"] and ends_sentence):
+            sky = words == ["clear"] and n > 0 and not clause.first_of_sentence and _conditions(clauses[n - 1].words)
+            if (
+                len(words) == 1
+                and w in ("clean", "close", "tight")
+                or (words == ["clear"] and ends_sentence and not sky)
+            ):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
@@ -1958,6 +1963,8 @@ def outcome_cues(said: str) -> list[Cue]:
                     act = "yield"  # ("I sat behind him", "we waved her across")
                 if act is not None:
                     add(act)
+            elif _is_verb(w) and _road_user_evades(words, i):
+                add("escape")  # (a named road user's hard brake or swerve: "the Prius swerved", "SUT braked hard")
             elif _lemmas(w) & {"let", "give", "yield"} and _is_verb(w) and not w.endswith("ing"):
                 if _ego_acts(words, i) == "yield" and not _denied_before(words, i):
                     add("yield")  # (someone gives way or lets the other go: no conflict)
@@ -1976,6 +1983,19 @@ def outcome_cues(said: str) -> list[Cue]:
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
     return cues
+
+
+@lru_cache(maxsize=1)
+def _condition_words() -> frozenset[str]:
+    """The one-word names of the weather and the time of day in the lexicon ("dry", "overcast", "dusk")."""
+    phrases = [p for ps in (*L.WEATHER.values(), *L.TIMES.values()) for p in ps]
+    return frozenset(p for p in phrases if " " not in p)
+
+
+def _conditions(words: list[str]) -> bool:
+    """Whether the clause ``words`` only names the weather or the time of day ("Morning", "dry, bright"):
+    a "clear" listed after it is the sky ("Morning, clear."), not a verdict on the pass ("Clear.")."""
+    return bool(words) and all(w in _condition_words() for w in words)
 
 
 #: Conjunctions of a time reached ("went once it was clear", "passed when the road was clear").
@@ -2031,6 +2051,31 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
     return False
 
 
+#: The last words of the lexicon's names for the ego's vehicle ("SUT", "the test vehicle", "host").
+_EGO_NOUN_HEADS = frozenset(p.split()[-1] for p in L.EGO_NOUNS) - _PERSON_OBJECTS
+
+
+def _road_user_evades(words: list[str], i: int) -> bool:
+    """Whether the finite verb at ``i`` is a hard brake or a swerve ("brakes hard", "stood on the
+    brakes", "swerved") whose subject, right before it, is a road user named by its noun or the ego
+    named by its vehicle ("the Tesla brakes HARD", "the bus driver slammed on", "SUT braked hard"): one
+    party's escape from the other, whichever of the two it is. Not a participle or an infinitive
+    ("a car braking hard", "to brake hard": no act said), nor one denied or under a condition
+    ("the van never braked", "if the cyclist had swerved")."""
+    if words[i].endswith("ing") or words[i - 1 : i] == ["to"] or _denied_before(words, i):
+        return False
+    if _scoped(words, i, _HYPOTHETICAL, 4) or _ego_acts(words, i) != "evade":
+        return False
+    rest = words[i + 1 : i + 5]
+    if any(x in _PATH_WORDS and rest[k + 1 : k + 3] and set(rest[k + 1 : k + 3]) & _NOT_ROAD_USERS
+           for k, x in enumerate(rest)):  # fmt: skip
+        return False  # ("the taxi swerved round a pothole": no road user escaped)
+    j = i - 1
+    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
+        j -= 1
+    return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS)
+
+
 def _hindsight(words: list[str], i: int) -> bool:
     """Whether the verb at ``i`` is under a modal of hindsight ("should have waited", "should've
     waited", "could have given way", "ought to have"): said, not done; "should brake" in a test's
@@ -2041,7 +2086,7 @@ def _hindsight(words: list[str], i: int) -> bool:
     return "have" in before and bool(set(before) & {"could", "would", "might", "should", "ought"})
 
 
-def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str | None:
+def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entered: bool = False) -> str | None:
     """The intent the cues state. A scenario a test rates critical is ``critical``, whatever else
     is said but a contact (a contact is what happened, a rating only how close it came); otherwise a
     contact anywhere is a collision; a hedge, a miss, a small margin
@@ -2053,8 +2098,16 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False) -> str
     or evasion it was a near miss avoided ("he shot out, I stood on the brakes, he's fine"); alone, a
     safe pass. ``intruded``: a road user is read cutting into the ego's lane or turning into its way;
     then the ego's brake (not a stop, which may be a wait), with nothing else said, is what that forced
-    on it ("he cut across in front of me. I braked, he went"): a near miss."""
+    on it ("he cut across in front of me. I braked, he went"): a near miss. ``entered``: a road user is
+    read coming into another's path (crossing, cutting in, turning across, running the red, coming the
+    wrong way); then a named road user's hard brake or swerve (an ``escape``) is one party escaping the
+    other, as the ego's evasion is ("a rider ran the red and the Tesla braked hard"); without one, a
+    hard brake is the lead vehicle's own act ("the lead car brakes hard"), no escape."""
     kinds = {c.kind for c in cues}
+    if "escape" in kinds:
+        kinds.discard("escape")
+        if entered:
+            kinds.add("evade")
     if "critical" in kinds and "contact" not in kinds:
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)

@@ -2826,7 +2826,8 @@ def _read(text: str) -> Reading:
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
     intruded = any(b[0] in _INTRUSIONS for a in r.actors for b in a.behaviours)  # ("cut in", "pulled out")
-    r.intent = decide(cues, sudden, intruded)  # (the outcome reader alone decides contact: not "hit the horn")
+    entered = any(b[0] in _INTO_A_PATH for a in r.actors for b in a.behaviours)  # ("ran the red", "crossed")
+    r.intent = decide(cues, sudden, intruded, entered)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     if not ego_named:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
@@ -2971,6 +2972,8 @@ _GOING_ON = frozenset(("keep_going", "keep_lane", "along_road", "follow_vehicle"
 #: Acts that put a road user into the ego's lane or way from beside it or from another road: a brake
 #: the ego makes beside one was forced on it.
 _INTRUSIONS = frozenset(("cut_in", "turn_into", "forced_turn"))
+#: Acts that bring a road user into another's path, not the hard brake or the swerve of one ahead.
+_INTO_A_PATH = ego_double.IN_THE_PATH - {"sudden_stop", "cut_out"}
 #: What someone does to get out of the way: swerving, dodging.
 _EVASIONS = ("cut_in", "change_lane", "cut_out")
 #: Behaviours only a vehicle does: said with no road user, a car does them.
