@@ -42,6 +42,7 @@ from vei_scenario.language import (
     follower_start,
     from_cover,
     generic_ego,
+    heading_named,
     held_pass,
     junctions,
     kerb_crossing,
@@ -2805,6 +2806,7 @@ def _read(text: str) -> Reading:
     intruded = any(b[0] in _INTRUSIONS for a in r.actors for b in a.behaviours)  # ("cut in", "pulled out")
     r.intent = decide(cues, sudden, intruded)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
+    actors = heading_named.merge_heading_named(actors, r, scanned)  # ("Scenario: Van brakes. When a van ...")
     if not ego_named:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
         writer_only = outside and not ego_double.addressed(text)  # (their "I" names no ego; "you" still does)
