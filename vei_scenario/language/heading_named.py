@@ -84,12 +84,7 @@ def _told_apart(first: _Said, again: _Said) -> bool:
     """Whether the reading sets two road users of one kind apart: each said to start somewhere the
     other is not, one parked and the other not, or one acting on the other."""
     starts_apart = bool(first.said) and bool(again.said) and not (first.said & again.said)
-    return (
-        starts_apart
-        or first.parked != again.parked
-        or again.object_of is first
-        or first.object_of is again
-    )
+    return starts_apart or first.parked != again.parked or again.object_of is first or first.object_of is again
 
 
 def _heading_said(actors: list, specs: list[ActorSpec], tokens: list[str], j: int) -> int | None:
