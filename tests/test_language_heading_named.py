@@ -75,6 +75,18 @@ def test_the_heading_gives_its_speed_where_the_text_gives_none() -> None:
             "Parked van on the left. I was doing 20 when a van reversed out of a driveway on my right.",
             ["van", "van"],
         ),
+        (  # a note's bare noun, said to start elsewhere than the later one
+            "Car pulled out of side road on left, I braked. A car behind me went into my back.",
+            ["car", "car"],
+        ),
+        (  # each doing a different thing of its own
+            "Taxi cut me up at the lights then a taxi behind him ran the red.",
+            ["car", "car"],
+        ),
+        (  # one crossing, the other waiting, on either side
+            "Pedestrian crossed from the left. A pedestrian on the right waited at the kerb.",
+            ["pedestrian", "pedestrian"],
+        ),
         (  # not bare: brought back with "the"
             "The bus ahead of me stopped at the stop. A bus behind me then overtook both of us.",
             ["truck", "truck"],

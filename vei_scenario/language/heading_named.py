@@ -29,6 +29,11 @@ from vei_scenario.language.said_again import plural
 _NEW = frozenset(("a", "an"))
 #: Words before a noun that say it is someone else than one named before ("a second cyclist").
 _SOMEONE_ELSE = frozenset(("other", "another", "second", "third", "further", "different"))
+#: What a road user does when it only goes along as it was: no act of its own.
+_GOING_ALONG = frozenset(("keep_going", "along_road", "keep_lane"))
+#: Turns across the ego's way, told apart by whose path they cross: one act, a turn, for telling two
+#: tellings of one road user apart ("turns right across ego path" read once as each).
+_TURNING = {"turn_across": "turn", "forced_turn": "turn", "turn_into": "turn"}
 #: How many modifiers may stand between a noun and its article ("a big white van").
 _MODIFIERS = 2
 
@@ -45,6 +50,11 @@ class _Said(Protocol):
     member_named: bool
     parked: bool
     said: set
+    side: str | None
+    kerb_side: str | None
+    lane_side: str | None
+    edge: str | None
+    from_arm: bool
     object_of: object
 
 
@@ -80,11 +90,35 @@ def _brought_in_new(a: _Said) -> bool:
     )
 
 
-def _told_apart(first: _Said, again: _Said) -> bool:
-    """Whether the reading sets two road users of one kind apart: each said to start somewhere the
-    other is not, one parked and the other not, or one acting on the other."""
+def _placed(a: _Said) -> bool:
+    """Whether the side ``a`` starts on was said in its own words (a side, a kerb's or a lane's side,
+    an arm), not only taken from what it does."""
+    return bool(a.side or a.kerb_side or a.lane_side or a.edge or a.from_arm)
+
+
+def _own_act(spec: ActorSpec) -> str | None:
+    """The first thing ``spec`` is read to do of its own, None where it only goes along as it was."""
+    first = spec.behaviours[0][0] if spec.behaviours else None
+    return None if first in _GOING_ALONG else _TURNING.get(first, first)
+
+
+def _told_apart(first: _Said, again: _Said, first_spec: ActorSpec, again_spec: ActorSpec) -> bool:
+    """Whether the words or the reading set two road users of one kind apart: each said to start
+    somewhere the other is not, or the first said to start elsewhere than the later one is read to;
+    each doing a different thing of its own ("Taxi cut me up, then a taxi behind him ran the red"); one
+    parked and the other not; or one acting on the other."""
     starts_apart = bool(first.said) and bool(again.said) and not (first.said & again.said)
-    return starts_apart or first.parked != again.parked or again.object_of is first or first.object_of is again
+    placed_apart = _placed(first) and first_spec.relation != again_spec.relation
+    acts = (_own_act(first_spec), _own_act(again_spec))
+    acts_apart = None not in acts and acts[0] != acts[1]
+    return (
+        starts_apart
+        or placed_apart
+        or acts_apart
+        or first.parked != again.parked
+        or again.object_of is first
+        or first.object_of is again
+    )
 
 
 def _heading_said(actors: list, specs: list[ActorSpec], tokens: list[str], j: int) -> int | None:
@@ -94,7 +128,7 @@ def _heading_said(actors: list, specs: list[ActorSpec], tokens: list[str], j: in
     if not _bare(tokens, a) or a.group or a.counted or a.member_named:
         return None
     k = next((k for k in range(j + 1, len(specs)) if specs[k].kind == kind), None)
-    if k is None or not _brought_in_new(actors[k]) or _told_apart(a, actors[k]):
+    if k is None or not _brought_in_new(actors[k]) or _told_apart(a, actors[k], specs[j], specs[k]):
         return None
     if any(s.obstacle in (j, k) for s in specs):
         return None  # (what a cut-out reveals stands there: never the one that reveals it)
