@@ -12,9 +12,13 @@ A bare noun is one with no article, possessive or count before it (over its modi
 e-scooter", "lead car"). The two are told apart, and both stay, where the words or the reading set
 them apart: the later one is said to be someone else ("another", "a second", "the other"), named in a
 group or by a plural; each is said to start somewhere the other is not ("Cyclist ahead of me ... a
-cyclist behind me"); one is parked and the other not; one acts on the other ("Bus pulls out. A car
-overtakes it"), or is the obstacle another reveals; or another road user of that kind is named
-between them.
+cyclist behind me"), or the bare one is said to start on a side the later one is not read on ("Car
+pulled out of side road on left ... A car behind me"); each does a different thing of its own ("Taxi
+cut me up, then a taxi behind him ran the red"; going along is nothing of its own, and a turn across
+is one act whoever's path it crosses); one is parked and the other not; one acts on the other ("Bus
+pulls out. A car overtakes it"), or is the obstacle another reveals; or another road user of that
+kind is named between them. Notes name road users bare too, and these guards are what keep a note's
+two road users of one kind apart.
 """
 
 from __future__ import annotations
