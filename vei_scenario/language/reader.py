@@ -43,6 +43,7 @@ from vei_scenario.language import (
     follower_start,
     from_cover,
     generic_ego,
+    heading_named,
     held_pass,
     junctions,
     kerb_crossing,
@@ -2829,6 +2830,7 @@ def _read(text: str) -> Reading:
     entered = any(b[0] in _INTO_A_PATH for a in r.actors for b in a.behaviours)  # ("ran the red", "crossed")
     r.intent = decide(cues, sudden, intruded, entered)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
+    actors = heading_named.merge_heading_named(actors, r, scanned)  # ("Scenario: Van brakes. When a van ...")
     if not ego_named:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
         writer_only = outside and not ego_double.addressed(text)  # (their "I" names no ego; "you" still does)
