@@ -39,6 +39,8 @@ from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 _BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
 #: Only going on: what road users listed together do where none of them meets another.
 _GOING_ON = frozenset(("keep_going", "change_speed"))
+#: Going past: what the ego does going on past a walker who writes.
+_PASSING = frozenset(("overtake",))
 #: A narrator's words: one who may be in the scene, on foot or riding, with a vehicle of their own.
 _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 #: Where a report's vehicle may be read to start while it is the ego: nowhere, or on the ego's own
@@ -46,11 +48,15 @@ _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 _ON_ITS_ROAD = (None, "ahead", "behind")
 
 
-def _reported(a, spec: ActorSpec) -> bool:
+def reported(a, spec: ActorSpec, writer_on_foot: bool = False) -> bool:
     """Whether motor vehicle ``spec`` (gathered as ``a``) reads as the vehicle a report is about: it
     moves, does only what the ego does, starts nowhere off its own road, and nothing sets it apart
-    (parked, standing, hiding someone, watched, followed, passed, in a group)."""
+    (parked, standing, hiding someone, watched, followed, passed, in a group). Where the writer is on
+    foot, one that goes past no one named ("went past me", "came up behind me and passed") goes past
+    the writer: the ego going on past a walker."""
     names = {b[0] for b in spec.behaviours}
+    if writer_on_foot and a.object_of is None:
+        names -= _PASSING
     return (
         spec.kind in VEHICLES
         and names <= EGO_LIKE
@@ -70,7 +76,12 @@ def _names(spec: ActorSpec) -> frozenset[str]:
 
 
 def merge_report_vehicle(
-    actors: list, reading: Reading, text: str, ego_phrase: bool = False, writer_outside: bool = False
+    actors: list,
+    reading: Reading,
+    text: str,
+    ego_phrase: bool = False,
+    writer_outside: bool = False,
+    writer_on_foot: bool = False,
 ) -> list:
     """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
     of the first person: the reader's own words read "you" as one) whose other road users are all
@@ -78,7 +89,8 @@ def merge_report_vehicle(
     ``actors`` are what the reader gathered of its road users, in the same order; ``ego_phrase``: a
     phrase names the ego ("the VUT"), and one brought in as new ("a car") is someone else. Returns
     ``actors`` without it. ``writer_outside``: the text's writer is in no motor vehicle of their own
-    (:mod:`vei_scenario.language.narrator_outside`), and the text is told as if it had no narrator."""
+    (:mod:`vei_scenario.language.narrator_outside`), and the text is told as if it had no narrator;
+    ``writer_on_foot``: they are on foot in the scene, and a vehicle going past no one named goes past them."""
     specs = reading.actors
     narrated = not writer_outside and _NARRATOR & set(re.findall(r"[a-z]+", text.lower()))
     if narrated or len(specs) < 2:
@@ -94,6 +106,6 @@ def merge_report_vehicle(
         return actors  # (listed going on together: none of them is the one the others meet)
     if ego_phrase and actors[k].det in NEW:
         return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
-    if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
+    if not reported(actors[k], specs[k], writer_on_foot) or not take_as_ego(reading, k):
         return actors
     return without_road_user(actors, reading, k)
