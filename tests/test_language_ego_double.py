@@ -66,7 +66,7 @@ def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypa
     monkeypatch.setattr(
         report_vehicle,
         "merge_report_vehicle",
-        lambda actors, reading, text, ego_phrase=False, outside=False, on_foot=False: actors,
+        lambda actors, reading, text, ego_phrase=False, outside=False: actors,
     )
     reading = read(text)
     assert len(reading.actors) == 2 and reading.ego_speed_mps is None

@@ -2817,7 +2817,7 @@ def _read(text: str) -> Reading:
         phrase = ego_double.ego_phrase(clauses)  # ("the VUT": one brought in as new is someone else)
         phrase = phrase and not outside  # ("we are told ...": the writer, not an ego phrase)
         afoot = outside and narrator_outside.on_foot(scanned)  # ("I stepped off the kerb and a van went past me")
-        actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase, outside, afoot)  # ("a Fiesta driven by")
+        actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase, outside)  # ("a Fiesta driven by")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
