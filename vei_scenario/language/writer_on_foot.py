@@ -61,7 +61,7 @@ def the_writer_met(actors: list, reading: Reading, tokens: list[str], writer_on_
         return actors
     k = acting[0]
     way = _writers_way(tokens)
-    if way is None or not reported(actors[k], specs[k], writer_outside=True) or not take_as_ego(reading, k):
+    if way is None or not reported(actors[k], specs[k], passing=True) or not take_as_ego(reading, k):
         return actors
     actors = without_road_user(actors, reading, k)
     reading.actors.append(ActorSpec("pedestrian", relation=way[0], behaviours=[(way[1], {}, None, "sequence")]))
