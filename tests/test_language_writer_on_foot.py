@@ -98,3 +98,34 @@ def test_a_writer_on_foot_is_outside_any_vehicle_even_where_met() -> None:
     assert not narrator_outside.on_foot("i swerved onto the kerb when a car came at me".split())
     assert narrator_outside.on_foot("we were on the pavement when a lorry went past us".split())
     assert narrator_outside.on_foot("i was out in the road in my wheelchair".split())
+
+
+@pytest.mark.parametrize(
+    ("text", "kph"),
+    [
+        ("We are told a delivery van passed a cyclist on the hill far too close at around 30 mph.", 48.3),
+        (
+            "Parents please note: a silver car overtook a boy on his bike outside the school gates at 25 mph,"
+            " very close.",
+            40.2,
+        ),
+        ("A danfo overtook a cyclist at 50 km/h near the market and nearly knocked him down.", 50),
+        ("One private bus overtook a cyclist at 60 km/h on the highway, very dangerous.", 60),
+    ],
+)
+def test_the_one_vehicle_that_passes_a_rider_in_a_report_is_the_ego(text: str, kph: float) -> None:
+    """Among walkers and riders, the one vehicle that overtakes passes one of them: the ego going on."""
+    assert [kind for kind, _, _ in _users(text)] == ["bicycle"]
+    assert ego_kph(text) == pytest.approx(kph, abs=0.1)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A lorry overtook a bus at 50 km/h and a cyclist came out from behind it.",  # (it passes a vehicle)
+        "A van overtook me at 60 mph while I was cycling to work.",  # (the writer rides: the van meets them)
+        "I was driving behind a cyclist when a van overtook us both at 50 mph.",  # (the writer at a wheel)
+    ],
+)
+def test_a_vehicle_passing_a_vehicle_or_a_writer_at_a_wheel_stays(text: str) -> None:
+    assert any(kind in ("car", "van", "truck") for kind, _, _ in _users(text))
