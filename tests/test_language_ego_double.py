@@ -64,7 +64,9 @@ def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypa
     """The wordings above need this module: the rest of the reader reads the ego's vehicle apart."""
     monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading, unnamed=False: actors)
     monkeypatch.setattr(
-        report_vehicle, "merge_report_vehicle", lambda actors, reading, text, ego_phrase=False, outside=False: actors
+        report_vehicle,
+        "merge_report_vehicle",
+        lambda actors, reading, text, ego_phrase=False, outside=False: actors,
     )
     reading = read(text)
     assert len(reading.actors) == 2 and reading.ego_speed_mps is None

@@ -61,10 +61,10 @@ def test_the_report_vehicle_is_the_ego(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
 
 
-#: Near misses: a narrator in the scene (on foot, on a bike) has the ego, and the vehicle is someone
-#: else; two motor vehicles (either may be the report's); a parked vehicle that hides someone.
+#: Near misses: a narrator in the scene on a bike has the ego, and the vehicle is someone else (a
+#: writer on foot is in no vehicle: tests/test_language_writer_on_foot.py); two motor vehicles (either
+#: may be the report's); a parked vehicle that hides someone.
 NEAR_MISSES = [
-    ("I was walking my dog when a Hilux travelling at 60 km/h hit a cyclist in front of me.", "van"),
     ("We were cycling along the canal road when a van going about 30 mph clipped my friend's bike.", "van"),
     (
         "A car travelling at 30 mph braked hard for a cyclist crossing ahead, and a van behind it ran into"

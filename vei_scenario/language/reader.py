@@ -66,6 +66,7 @@ from vei_scenario.language import (
     sides,
     start_gap,
     whose_act,
+    writer_on_foot,
 )
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
@@ -2831,6 +2832,7 @@ def _read(text: str) -> Reading:
     r.intent = decide(cues, sudden, intruded, entered)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     actors = heading_named.merge_heading_named(actors, r, scanned)  # ("Scenario: Van brakes. When a van ...")
+    afoot = False  # (the writer on foot in the scene, in no vehicle of their own)
     if not ego_named:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
         writer_only = outside and not ego_double.addressed(text)  # (their "I" names no ego; "you" still does)
@@ -2840,11 +2842,13 @@ def _read(text: str) -> Reading:
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
         phrase = ego_double.ego_phrase(clauses)  # ("the VUT": one brought in as new is someone else)
         phrase = phrase and not outside  # ("we are told ...": the writer, not an ego phrase)
+        afoot = outside and narrator_outside.on_foot(scanned)  # ("I stepped off the kerb and a van went past me")
         actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase, outside)  # ("a Fiesta driven by")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
     actors = narrator_ride.drop_narrators_ride(actors, r, scanned, _kind_at)  # ("I was on one of your e-scooters")
+    actors = writer_on_foot.the_writer_met(actors, r, scanned, afoot)  # ("I stepped out and a taxi went past me")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:

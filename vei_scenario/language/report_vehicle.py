@@ -11,7 +11,8 @@ The scenario is that vehicle's: it is the ego, not one more road user.
 
 It is told apart by what the reading holds, not by its words: the one motor vehicle read that moves,
 beside road users that are all walkers or riders, doing only what the ego does in the story told from
-it (it goes on, slows, brakes). Guards, each with its reason:
+it (it goes on, slows, brakes, or goes past one of the walkers or riders: "a van overtook the
+cyclist far too close"). Guards, each with its reason:
 
 - no narrator speaks ("I", "we", "my"): a narrator may be the walker or rider, or in a vehicle of
   their own; "you" and an ego phrase ("the test car") name the ego, which the one vehicle then is;
@@ -39,6 +40,8 @@ from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 _BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
 #: Only going on: what road users listed together do where none of them meets another.
 _GOING_ON = frozenset(("keep_going", "change_speed"))
+#: Going past: what the ego does going on past a walker who writes.
+_PASSING = frozenset(("overtake",))
 #: A narrator's words: one who may be in the scene, on foot or riding, with a vehicle of their own.
 _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 #: Where a report's vehicle may be read to start while it is the ego: nowhere, or on the ego's own
@@ -46,11 +49,15 @@ _NARRATOR = frozenset(("i", "me", "my", "mine", "we", "us", "our", "ours"))
 _ON_ITS_ROAD = (None, "ahead", "behind")
 
 
-def _reported(a, spec: ActorSpec) -> bool:
+def reported(a, spec: ActorSpec, passing: bool = False) -> bool:
     """Whether motor vehicle ``spec`` (gathered as ``a``) reads as the vehicle a report is about: it
     moves, does only what the ego does, starts nowhere off its own road, and nothing sets it apart
-    (parked, standing, hiding someone, watched, followed, passed, in a group)."""
+    (parked, standing, hiding someone, watched, followed, passed, in a group). With ``passing``, one
+    that goes past no one named or a walker or rider ("went past me", "overtook the cyclist") is the
+    ego going on past them: among walkers and riders, the one vehicle that passes passes one of them."""
     names = {b[0] for b in spec.behaviours}
+    if passing and (a.object_of is None or a.object_of.kind in VULNERABLE):
+        names -= _PASSING  # ("a van came past me", "a van overtook the cyclist": the ego going on past them)
     return (
         spec.kind in VEHICLES
         and names <= EGO_LIKE
@@ -70,7 +77,11 @@ def _names(spec: ActorSpec) -> frozenset[str]:
 
 
 def merge_report_vehicle(
-    actors: list, reading: Reading, text: str, ego_phrase: bool = False, writer_outside: bool = False
+    actors: list,
+    reading: Reading,
+    text: str,
+    ego_phrase: bool = False,
+    writer_outside: bool = False,
 ) -> list:
     """Take out of ``reading`` the one motor vehicle of a report with no narrator (``text`` has no word
     of the first person: the reader's own words read "you" as one) whose other road users are all
@@ -78,7 +89,8 @@ def merge_report_vehicle(
     ``actors`` are what the reader gathered of its road users, in the same order; ``ego_phrase``: a
     phrase names the ego ("the VUT"), and one brought in as new ("a car") is someone else. Returns
     ``actors`` without it. ``writer_outside``: the text's writer is in no motor vehicle of their own
-    (:mod:`vei_scenario.language.narrator_outside`), and the text is told as if it had no narrator."""
+    (:mod:`vei_scenario.language.narrator_outside`), and the text is told as if it had no narrator. A
+    vehicle that goes past a walker or rider (or no one named) is going on past them."""
     specs = reading.actors
     narrated = not writer_outside and _NARRATOR & set(re.findall(r"[a-z]+", text.lower()))
     if narrated or len(specs) < 2:
@@ -94,6 +106,6 @@ def merge_report_vehicle(
         return actors  # (listed going on together: none of them is the one the others meet)
     if ego_phrase and actors[k].det in NEW:
         return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
-    if not _reported(actors[k], specs[k]) or not take_as_ego(reading, k):
+    if not reported(actors[k], specs[k], passing=True) or not take_as_ego(reading, k):
         return actors
     return without_road_user(actors, reading, k)
