@@ -924,3 +924,45 @@ def test_every_written_form_of_a_speed_unit_is_read(unit, kph):
 def test_an_acceleration_in_exponents_is_no_speed():
     text = "I was driving at 50 km/h and braked at 6 m s^-2 when a kid ran out in front of me."
     assert _ego(text) == pytest.approx(50 * KPH, abs=0.05)
+
+
+# --- a speed said of what did not happen (a condition, what would or should have been): no one's speed ------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # an expert's report: the condition inverted
+        ("I was doing 40 mph when a boy ran out. Had I been doing 20 mph, I would have stopped in time.", 40),
+        # a witness statement: "if ... had been"
+        ("The car was doing 35 mph when the girl stepped out. If it had been doing 20 mph she would be fine.", 35),
+        # a judgment: what a careful driver would have done
+        ("The van was travelling at 26 mph when the child ran out. A careful driver would have slowed to 15 mph.", 26),
+        # a campaign post: what the driver should have been doing
+        ("The bus was doing 30 mph when a girl ran out in front of it. It should have been doing 20 mph there.", 30),
+        # a coroner's note: "ought to have"
+        ("The lorry was going at 40 mph when the cyclist fell. It ought to have slowed to 25 mph at the bend.", 40),
+        # the norm said first, then the story
+        ("Near a school any driver should have slowed to 15 mph. The van was doing 26 mph when a boy ran out.", 26),
+    ],
+    ids=["had-inverted", "if-had", "would-have", "should-have-been", "ought-to-have", "norm-first"],
+)
+def test_a_speed_of_what_did_not_happen_is_no_ones(text, mph):
+    r = read(text)
+    pace = r.ego_speed_mps if r.ego_speed_mps is not None else r.scene_pace_mps
+    assert pace == pytest.approx(mph * MPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # an estimate said with a modal: someone's real speed, guessed
+        ("A van overtook me, he must have been doing 60 mph. I was doing 40 mph.", 40),
+        ("I would have been doing about 30 mph when a kid ran out in front of me.", 30),
+        # a plain past perfect: what was
+        ("I had been doing 50 mph for a mile when a cyclist pulled out in front of me.", 50),
+        # "had" as a verb at the start
+        ("Had a fright coming home at about 20 mph, a scooter came out in front of me.", 20),
+    ],
+    ids=["must-have-been", "would-have-been-doing", "past-perfect", "had-a-fright"],
+)
+def test_a_guessed_or_past_speed_is_still_read(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH, rel=1e-3)

@@ -644,6 +644,44 @@ def bare_owned(tokens: list[str], i: int) -> bool:
 
 #: Nouns a speed with its unit names a limit of, after an article ("a 60 km/h zone", "the 40 mph limit").
 _LIMITED = frozenset({"zone", "limit", "limits", "area", "road", "street", "stretch", "section", "sign"})
+#: Words that bound the clause a counterfactual speed is said in ("..., had it been doing 30, ...").
+_CLAUSE_BOUNDS = frozenset({".", ";", "!", "?", ",", "and", "but", "when", "so", "then", "while", "because"})
+#: Modals of what would have happened or should have been ("would have stopped", "should have reduced").
+_MODALS = frozenset({"would", "could", "should", "might", "ought"})
+#: Modals of what ought to have been: "should have been doing 20" is a norm, not an estimate.
+_NORMS = frozenset({"should", "ought"})
+
+
+def counterfactual(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is said in a clause of what did not happen: a condition ("had the car been
+    travelling at 30 mph, ...", "if she had been doing 20"), or what would or should have been done
+    ("a careful driver would have reduced speed to 20 mph", "he should have been doing 20 there", "at 20
+    mph he could have stopped"). Why: an expert, a judge or a witness says what speed would have avoided
+    the harm, and no one went at it. Not an estimate said with a modal ("he must have been doing 60",
+    "she would have been doing about 40", "could have been going 50": someone's real speed, guessed), and
+    not a plain past perfect ("I had been doing 50 before the lights") or "had" as a verb ("Had a fright
+    coming home at 20 mph"), which have no "if" and no "had <subject> been"."""
+    start = i
+    while start > 0 and tokens[start - 1] not in _CLAUSE_BOUNDS:
+        start -= 1
+    stop = i
+    while stop < len(tokens) and tokens[stop] not in _CLAUSE_BOUNDS:
+        stop += 1
+    clause = tokens[start:stop]
+    if clause[:1] == ["had"] and "been" in clause[2:5]:  # ("had the car been ...": not "Had a fright, doing 20")
+        return True
+    if "had" in clause and "if" in clause[: clause.index("had")]:
+        return True
+    for k, word in enumerate(clause[:-1]):
+        have = k + 1 + (word == "ought" and clause[k + 1] == "to")
+        if word not in _MODALS or have >= len(clause) or clause[have] != "have":
+            continue
+        guessed = clause[have + 1 : have + 2] == ["been"] and any(t in GOING for t in clause[have + 2 : have + 4])
+        if not guessed or word in _NORMS:
+            return True
+    return False
+
+
 #: Words that give a limit its number after it ("a limit of 40", "cut the limit to 20 mph", "the limit is 30").
 _LIMIT_VALUE = frozenset({"of", "to", "is", "was", "at", ":"})
 #: How many words may stand between "limit" and the word giving its number ("the speed limit on Kirkby

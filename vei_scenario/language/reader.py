@@ -1839,6 +1839,10 @@ def _read(text: str) -> Reading:
                     road_limit = m.value
                 prev = m
                 continue
+            if m.slot == "speed" and ego_speed.counterfactual(scanned, m.start):
+                ignored.append(m.words)  # ("had it been doing 30 mph, she would have cleared it": no one's)
+                prev = m
+                continue
             if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
                 ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
                 prev = m
