@@ -592,6 +592,76 @@ def test_a_limit_said_alone_still_gives_the_egos_speed():
     assert _ego("In a 30 mph zone a kid ran out between parked cars in front of me.") == pytest.approx(30 * MPH)
 
 
+# --- a limit said in another sentence than the speed someone goes at: the road's, not the ego's ------------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # a campaign's headline, then the story
+        ("WE WANT A 20MPH ZONE OUTSIDE THE SCHOOL\nLast week I was doing about 25 mph when a boy ran out.", 25),
+        # a petition: the limit asked for, then the resident's drive
+        (
+            "Cut the speed limit on Mill Lane to 20 mph. A neighbour driving home at 30 mph was hit by a van "
+            "turning right across her.",
+            30,
+        ),
+        # a news item: the road's limit as an aside of its own
+        ("The road has a 40 mph limit. The driver was travelling at 35 mph when a cyclist swerved in front.", 35),
+        # a text message: the limit first, the speed after
+        ("its a 30 zone. i was only going 25 mph n this kid on a scooter shot out in front of me", 25),
+        # an Indian English complaint: "limit of" then the number, the speed in the next sentence
+        (
+            "Speed limit of 50 km/h is there on this road. I was going at 40 km/h only when one auto cut in front "
+            "of me.",
+            40 / 1.609344,
+        ),
+        # a police report: the limit after the story
+        ("Vehicle 1 was travelling at 28 mph when a pedestrian stepped out. The limit there is 20 mph.", 28),
+    ],
+    ids=["headline", "petition", "news-aside", "text-message", "limit-of", "limit-after"],
+)
+def test_a_limit_in_another_sentence_is_not_the_speed_someone_goes_at(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        (
+            "The estate is a 20 mph zone. A van travelling at 30 mph struck a boy who ran out from between parked "
+            "cars.",
+            30,
+        ),
+        (
+            "Our road is a 20mph zone!! a delivery van doing 35 mph nearly took out a lad on a bike who came out "
+            "from behind a parked car",
+            35,
+        ),
+        ("Speed limit: 30 mph. The bus was doing 40 mph when a child ran out from behind a parked car.", 40),
+    ],
+    ids=["zone-then-report", "zone-then-post", "limit-key"],
+)
+def test_a_limit_gives_way_to_the_one_speed_of_the_scene(text, mph):
+    r = read(text)
+    pace = r.ego_speed_mps if r.ego_speed_mps is not None else r.scene_pace_mps
+    assert pace == pytest.approx(mph * MPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # the limit alone: still the ego's pace
+        ("It's a 30 mph road. A kid ran out between parked cars in front of me.", 30),
+        # the other speed is a walker's pace: nothing of the traffic's, the limit stays the ego's pace
+        ("The road has a 40 mph limit. A jogger at 6 mph crossed in front of me.", 40),
+        # keeping to the limit is the ego's own speed, no limit's number
+        ("I was keeping to the limit of 30 mph when a van came past me at 50 mph.", 30),
+    ],
+    ids=["alone", "walker-pace", "keeping-to"],
+)
+def test_a_limit_stays_the_egos_pace_where_nothing_else_gives_one(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH, rel=1e-3)
+
+
 # --- a motorway's free-flowing speed under 80 said bare: mph, where km/h signs a motorway at 100 or more ----------
 @pytest.mark.parametrize(
     "text, mph",
@@ -854,3 +924,45 @@ def test_every_written_form_of_a_speed_unit_is_read(unit, kph):
 def test_an_acceleration_in_exponents_is_no_speed():
     text = "I was driving at 50 km/h and braked at 6 m s^-2 when a kid ran out in front of me."
     assert _ego(text) == pytest.approx(50 * KPH, abs=0.05)
+
+
+# --- a speed said of what did not happen (a condition, what would or should have been): no one's speed ------------
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # an expert's report: the condition inverted
+        ("I was doing 40 mph when a boy ran out. Had I been doing 20 mph, I would have stopped in time.", 40),
+        # a witness statement: "if ... had been"
+        ("The car was doing 35 mph when the girl stepped out. If it had been doing 20 mph she would be fine.", 35),
+        # a judgment: what a careful driver would have done
+        ("The van was travelling at 26 mph when the child ran out. A careful driver would have slowed to 15 mph.", 26),
+        # a campaign post: what the driver should have been doing
+        ("The bus was doing 30 mph when a girl ran out in front of it. It should have been doing 20 mph there.", 30),
+        # a coroner's note: "ought to have"
+        ("The lorry was going at 40 mph when the cyclist fell. It ought to have slowed to 25 mph at the bend.", 40),
+        # the norm said first, then the story
+        ("Near a school any driver should have slowed to 15 mph. The van was doing 26 mph when a boy ran out.", 26),
+    ],
+    ids=["had-inverted", "if-had", "would-have", "should-have-been", "ought-to-have", "norm-first"],
+)
+def test_a_speed_of_what_did_not_happen_is_no_ones(text, mph):
+    r = read(text)
+    pace = r.ego_speed_mps if r.ego_speed_mps is not None else r.scene_pace_mps
+    assert pace == pytest.approx(mph * MPH, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        # an estimate said with a modal: someone's real speed, guessed
+        ("A van overtook me, he must have been doing 60 mph. I was doing 40 mph.", 40),
+        ("I would have been doing about 30 mph when a kid ran out in front of me.", 30),
+        # a plain past perfect: what was
+        ("I had been doing 50 mph for a mile when a cyclist pulled out in front of me.", 50),
+        # "had" as a verb at the start
+        ("Had a fright coming home at about 20 mph, a scooter came out in front of me.", 20),
+    ],
+    ids=["must-have-been", "would-have-been-doing", "past-perfect", "had-a-fright"],
+)
+def test_a_guessed_or_past_speed_is_still_read(text, mph):
+    assert _ego(text) == pytest.approx(mph * MPH, rel=1e-3)

@@ -644,25 +644,96 @@ def bare_owned(tokens: list[str], i: int) -> bool:
 
 #: Nouns a speed with its unit names a limit of, after an article ("a 60 km/h zone", "the 40 mph limit").
 _LIMITED = frozenset({"zone", "limit", "limits", "area", "road", "street", "stretch", "section", "sign"})
+#: Words that bound the clause a counterfactual speed is said in ("..., had it been doing 30, ...").
+_CLAUSE_BOUNDS = frozenset({".", ";", "!", "?", ",", "and", "but", "when", "so", "then", "while", "because"})
+#: Modals of what would have happened or should have been ("would have stopped", "should have reduced").
+_MODALS = frozenset({"would", "could", "should", "might", "ought"})
+#: Modals of what ought to have been: "should have been doing 20" is a norm, not an estimate.
+_NORMS = frozenset({"should", "ought"})
+
+
+def counterfactual(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is said in a clause of what did not happen: a condition ("had the car been
+    travelling at 30 mph, ...", "if she had been doing 20"), or what would or should have been done
+    ("a careful driver would have reduced speed to 20 mph", "he should have been doing 20 there", "at 20
+    mph he could have stopped"). Why: an expert, a judge or a witness says what speed would have avoided
+    the harm, and no one went at it. Not an estimate said with a modal ("he must have been doing 60",
+    "she would have been doing about 40", "could have been going 50": someone's real speed, guessed), and
+    not a plain past perfect ("I had been doing 50 before the lights") or "had" as a verb ("Had a fright
+    coming home at 20 mph"), which have no "if" and no "had <subject> been"."""
+    start = i
+    while start > 0 and tokens[start - 1] not in _CLAUSE_BOUNDS:
+        start -= 1
+    stop = i
+    while stop < len(tokens) and tokens[stop] not in _CLAUSE_BOUNDS:
+        stop += 1
+    clause = tokens[start:stop]
+    if clause[:1] == ["had"] and "been" in clause[2:5]:  # ("had the car been ...": not "Had a fright, doing 20")
+        return True
+    if "had" in clause and "if" in clause[: clause.index("had")]:
+        return True
+    for k, word in enumerate(clause[:-1]):
+        have = k + 1 + (word == "ought" and clause[k + 1] == "to")
+        if word not in _MODALS or have >= len(clause) or clause[have] != "have":
+            continue
+        guessed = clause[have + 1 : have + 2] == ["been"] and any(t in GOING for t in clause[have + 2 : have + 4])
+        if not guessed or word in _NORMS:
+            return True
+    return False
+
+
+#: Words that give a limit its number after it ("a limit of 40", "cut the limit to 20 mph", "the limit is 30").
+_LIMIT_VALUE = frozenset({"of", "to", "is", "was", "at", ":"})
+#: How many words may stand between "limit" and the word giving its number ("the speed limit on Kirkby
+#: Road to 20 mph", "the limit here is 30").
+_LIMIT_REACH = 6
+
+
+def limit_number_after(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is the number a limit named before it is given ("a speed limit of 30 mph",
+    "reduce the limit on the high road to 20mph", "the limit there is 50"): within its clause, with no
+    verb of going before the limit ("doing the limit of 30", "keeping to the limit of 40" say the ego's
+    own speed, which :func:`at_the_limit` reads)."""
+    if i < 2 or tokens[i - 1] not in _LIMIT_VALUE:
+        return False
+    for k in range(i - 2, max(i - 2 - _LIMIT_REACH, -1), -1):
+        if tokens[k] in SENTENCE_END or tokens[k] == "," or tokens[k] in GOING:
+            return False
+        if tokens[k] in ("limit", "limits"):
+            return not (k >= 2 and (tokens[k - 2] in GOING or tokens[k - 3 : k - 2] and tokens[k - 3] in GOING))
+    return False
 
 
 def limits(tokens: list[str], speeds: set[int]) -> set[int]:
     """The speeds (by their index in ``speeds``) that name a road's limit ("in a 60 km/h zone", "on a 40 mph
-    road", "the 30 mph speed limit") in a sentence that says another speed: the one the other speed is
-    said beside, a speed someone goes at, not a speed of its own ("I was doing 50 in a 60 km/h zone": 50).
-    A limit said alone stays a speed (the reader reads it as the speed traffic keeps there)."""
+    road", "the 30 mph speed limit", "a limit of 20 mph") in a text that says another speed, in the same
+    sentence or in any other: someone goes at that other speed, and the limit is the road's, no one's
+    speed ("I was doing 50 in a 60 km/h zone": 50; "WE NEED A 20MPH LIMIT. A van came past at 34 mph":
+    34). Why the whole text: a limit is a fact of the road, said in a title, a complaint or an aside
+    wherever the writer likes, and the speed someone was going is said where the story is. A limit said
+    alone, with no other speed, stays a speed (the reader reads it as the speed traffic keeps there)."""
     named = set()
     for i in speeds:
         end = i + 1 + (i + 1 < len(tokens) and tokens[i + 1] in V.SPEED_UNITS)
         end += end < len(tokens) and tokens[end] == "speed"
         if i and tokens[i - 1] in ("a", "an", "the") and end < len(tokens) and tokens[end] in _LIMITED:
             named.add(i)
+        elif limit_number_after(tokens, i):
+            named.add(i)
+    return named if speeds - named else set()
+
+
+def limits_alone(tokens: list[str], speeds: set[int], skipped: set[int]) -> set[int]:
+    """Of the ``skipped`` limits (:func:`limits`), those with no other speed in their sentence ("WE NEED
+    A 20MPH LIMIT.", "The limit is 40."): the road's limit, which the ego keeps where nothing else in
+    the reading gives its pace (no speed said of it, no one speed of the scene); a limit said beside
+    another speed ("doing 50 in a 60 zone") is only the road's."""
     out = set()
-    for i in named:
+    for i in skipped:
         start, stop = sentence_start(tokens, i, SENTENCE_END), i
         while stop < len(tokens) and tokens[stop] not in SENTENCE_END:
             stop += 1
-        if any(start <= j < stop for j in speeds - named):
+        if not any(start <= j < stop for j in speeds - skipped):
             out.add(i)
     return out
 

@@ -1829,6 +1829,8 @@ def _read(text: str) -> Reading:
     egos_own.update({i: True for i in speeds if ego_speed.owned(scanned, i)})  # ("much faster than my 70")
     egos_own.update({i: True for i in speeds if ego_speed.cruise_setting(scanned, i)})  # ("cruise set to 100")
     limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
+    limits_alone = ego_speed.limits_alone(scanned, speeds, limits)  # ("WE NEED A 20MPH LIMIT. A van ...")
+    road_limit: float | None = None  # (the first of those: the ego's pace where nothing else gives one)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     opened.update(ego_speed.before_what_happened(scanned, speeds, road_users))  # ("On the M6 at 70 when ...")
     for link, mentions in clauses:
@@ -1856,6 +1858,12 @@ def _read(text: str) -> Reading:
             if m.slot == "modal":
                 continue
             if m.slot == "speed" and m.start in limits:
+                if m.start in limits_alone and road_limit is None:
+                    road_limit = m.value
+                prev = m
+                continue
+            if m.slot == "speed" and ego_speed.counterfactual(scanned, m.start):
+                ignored.append(m.words)  # ("had it been doing 30 mph, she would have cleared it": no one's)
                 prev = m
                 continue
             if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
@@ -2856,6 +2864,8 @@ def _read(text: str) -> Reading:
     tight_cut_ins(r.actors, r.ego_speed_mps, r.intent)  # ("cut in 5 m in front of me at 60 mph": dangerous)
     Q.struck_at_rest(r.actors, r.ego_speed_mps, r.intent)  # ("I was waiting at the lights when a van hit me")
     scene_pace.ego_at_the_scene_pace(r, any(a.passed for a in actors))  # ("he hit the scooter doing 30")
+    if r.ego_speed_mps is None and r.scene_pace_mps is None and road_limit is not None:
+        r.ego_speed_mps = road_limit  # ("The limit is 40. A cyclist doing 15 pulled out": at the road's limit)
     r.lanes = stated_lanes(said) or r.lanes
     oncoming = any(s.relation == "oncoming" or any(b[0] == "wrong_way" for b in s.behaviours) for s in r.actors)
     r.lanes = S.lanes_of_two_way_road(said, oncoming) or S.lanes_counted(said) or r.lanes
