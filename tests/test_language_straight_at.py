@@ -1,0 +1,68 @@
+"""A road user said to come straight, right or directly at the ego, or head-on at it ("came straight
+at me", "rode right at us", "heading directly for my car", "coming at us head-on"), comes on the ego's
+own line: in the ego's lane, head-on, the wrong way. One that only comes towards the ego ("came
+towards me") is oncoming in its own lane, and one that comes out of a side road or from a side at
+the ego, or turns, crosses or walks at it, is no wrong-way road user."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+def _first(text: str) -> list[str]:
+    """The behaviours of the first road user read from ``text`` that is not a walker, or of the first."""
+    actors = read(text).actors
+    actor = next((a for a in actors if a.kind != "pedestrian"), actors[0])
+    return [b[0] for b in actor.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a British driver's post
+        "Came round the bend at 40 and a lad on a motorbike was coming straight at me. Had to brake hard.",
+        # an American text message
+        "omg I was doing 25 and some guy on a bike rode right at us, I had to stop",
+        # a police witness statement, the driver in the third person
+        "The witness states that a motorcycle was travelling directly towards her and she steered left.",
+        # Indian English
+        "Today one scooter fellow came straight towards my car, I applied brakes fully.",
+        # Nigerian English
+        "As I was driving along the road, one okada man came straight for my car and I swerved.",
+        # a voice note
+        "and this lorry's coming at us head-on, honestly, so I'm braking and braking",
+        # a test specification
+        "The target vehicle drives head-on towards the ego at 50 km/h; the ego brakes.",
+        # a story
+        "There was a boy on one of those scooters, no lights, coming straight at her, and she wrenched the wheel.",
+        # an Australian post
+        "Cruising at 80 when a ute comes flying round the corner dead at me, I'm in the ditch.",
+    ],
+)
+def test_coming_straight_at_the_ego_is_head_on_the_wrong_way(text: str) -> None:
+    assert _first(text)[0] == "wrong_way"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # oncoming in its own lane: only towards the ego
+        "A cyclist came towards me and passed safely.",
+        "A lorry came round the bend towards us and went by.",
+        # out of a side road, from a side: it crosses or turns into the ego's road
+        "A van came out of the side road straight at me.",
+        "I was at the lights when a car came from the right straight at me and ran the red.",
+        # a walker
+        "A man walked straight at my car from the pavement and I stopped.",
+        # the ego the one going straight at something
+        "The car ahead braked and I went straight at it.",
+        # a side, not a manner
+        "A cyclist was coming up on the right towards me in the cycle lane.",
+        # "at" a speed, not at the ego
+        "Ego turns right at 20 km/h; an oncoming motorbike is coming straight at high speed and ego gives way.",
+    ],
+)
+def test_towards_from_a_side_or_on_foot_is_not_the_wrong_way(text: str) -> None:
+    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
