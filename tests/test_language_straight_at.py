@@ -66,3 +66,30 @@ def test_coming_straight_at_the_ego_is_head_on_the_wrong_way(text: str) -> None:
 )
 def test_towards_from_a_side_or_on_foot_is_not_the_wrong_way(text: str) -> None:
     assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "An e-scooter rides towards the ego in its lane at 20 km/h.",
+        "Oncoming cyclist approaches the ego vehicle in its lane, no lights, at night.",
+        "A motorcycle is heading toward the test vehicle in its lane at 60 km/h.",
+        "The target car comes at the ego in its lane; the ego brakes.",
+        "Scenario 4: a bicycle coming towards the subject vehicle in its lane at dusk.",
+    ],
+)
+def test_towards_the_ego_in_its_lane_is_the_egos_lane(text: str) -> None:
+    """"Its" right after the ego, said of one coming at it, is the ego's: the nearest noun owns it."""
+    assert _first(text)[0] == "wrong_way"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car overtook the ego and stayed in its lane ahead.",
+        "A cyclist rides ahead of the ego in its lane at 15 km/h.",
+        "The ego drives in its lane at 50 km/h; an oncoming van goes by.",
+    ],
+)
+def test_its_lane_of_one_going_the_egos_way_or_of_the_ego_itself_is_no_head_on(text: str) -> None:
+    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]

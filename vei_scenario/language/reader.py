@@ -3909,8 +3909,10 @@ def _apply(m, who, r, link, added) -> None:
             a.along = a.along or (m.value == "ahead" and kerb_ride.same_heading(m.words))
             if m.value == "ahead" and not a.behaviours:
                 a.said.add("ahead_first")  # ("the car ahead of us swung out": where it is before it moves)
-            if m.value == "ahead" and motion.in_the_ego_lane(m.words):
-                a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
+            if m.value == "ahead" and (
+                motion.in_the_ego_lane(m.words) or motion.its_lane_the_egos(m.words, m.prev, a.said)
+            ):
+                a.said.add("in_ego_lane")  # ("in my lane", "towards the ego in its lane": the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if m.value == "ahead" and m.words in ("following", "tailing", "behind"):
                 a.said.add("ego_behind")  # ("following a van", "we were behind a van": in the ego's lane)
