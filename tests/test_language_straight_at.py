@@ -79,7 +79,7 @@ def test_towards_from_a_side_or_on_foot_is_not_the_wrong_way(text: str) -> None:
     ],
 )
 def test_towards_the_ego_in_its_lane_is_the_egos_lane(text: str) -> None:
-    """"Its" right after the ego, said of one coming at it, is the ego's: the nearest noun owns it."""
+    """The ego owns "its" right after it, said of one coming at it: the nearest noun owns the possessive."""
     assert _first(text)[0] == "wrong_way"
 
 
