@@ -93,3 +93,29 @@ def test_towards_the_ego_in_its_lane_is_the_egos_lane(text: str) -> None:
 )
 def test_its_lane_of_one_going_the_egos_way_or_of_the_ego_itself_is_no_head_on(text: str) -> None:
     assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came round the corner, straight at me, and I braked.",
+        "A van was coming down the hill, right at us, so we stopped.",
+        "A motorbike was hurtling along the lane, straight for me, no lights.",
+        "An e-scooter came the wrong way up the one-way street, towards me, and I stopped.",
+        "A kid on a bike came flying down the hill, head-on at us, and mum swerved.",
+    ],
+)
+def test_at_the_ego_set_off_by_a_comma_is_still_said_of_the_travel(text: str) -> None:
+    """A comma before "straight at me" sets off how the road user comes, not a new clause."""
+    assert _first(text)[0] == "wrong_way"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came out of the side road, straight at me.",
+        "A lorry came round the bend, towards me, and went by.",
+    ],
+)
+def test_a_comma_does_not_join_a_place_one_comes_out_of_nor_make_towards_head_on(text: str) -> None:
+    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]

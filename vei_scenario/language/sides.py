@@ -776,17 +776,21 @@ def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     when a verb of travelling comes before it with no more than where it travels between ("came round
     the corner towards me", "came flying down the hill straight at me", "heading right for us"), or
     None. Why: the lexicon's "come towards" and "come at" hold only with nothing between, and writers
-    say the road or bend it comes along first. Not a move sideways ("swerved towards me": no verb of
+    say the road or bend it comes along first, often with a comma ("came round the corner, straight at
+    me"). Not a move sideways ("swerved towards me": no verb of
     travelling), nor coming out of, off or across a place ("came off the pavement towards me"), nor
     along the edge of the road ("riding down the side of the road toward me": it keeps to that edge)."""
     end = _the_ego_after(tokens, i)
     if end is None:
         return None
+    opens = i - 1 - _on_its_line_before(tokens, i)  # (the word before "straight at me")
     for k in range(i - 1, max(-1, i - _REACH - 1), -1):
+        if k == opens and tokens[k] == ",":
+            continue  # ("came round the corner, straight at me": a comma sets off how it comes)
         if tokens[k] in _NOT_ALONG or (tokens[k] in _EDGE and not _a_half_of_the_road(tokens, k)):
             return None  # (not "riding down the side of the road toward me": along the edge, its kerb's)
         verbs = set(lemmas(tokens[k]).get("VERB", ()))
-        if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs or _on_its_line_before(tokens, i)):
+        if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs or _on_its_line_before(tokens, i) > 0):
             said_by_the_lexicon = k == i - 1 and bool(verbs & _LEXICON_TOWARDS.get(tokens[i], set()))
             return None if said_by_the_lexicon else end  # (right after "came" the lexicon's "come at" reads it)
     return None
@@ -799,15 +803,16 @@ _ON_ITS_LINE = frozenset({"straight", "right", "directly", "direct", "dead", "sq
 _SIDE_BEFORE = frozenset({"the", "to", "on", "my", "our", "your", "his", "her", "its", "their", "from"})
 
 
-def _on_its_line_before(tokens: list[str], i: int) -> bool:
-    """Whether the word before the preposition at token ``i`` says the road user comes on the ego's
-    very line ("straight at", "right for", "head on towards"): "right" only as a manner, not a side."""
+def _on_its_line_before(tokens: list[str], i: int) -> int:
+    """How many words before the preposition at token ``i`` say the road user comes on the ego's very
+    line ("straight at", "right for", "head on towards"), 0 where none: "right" only as a manner, not
+    a side ("on the right towards me")."""
     before = tokens[i - 1] if i else ""
-    if tokens[i - 2 : i] == ["head", "on"]:
-        return True
+    if i > 1 and tokens[i - 2 : i] == ["head", "on"]:
+        return 2
     if before == "right" and i > 1 and tokens[i - 2] in _SIDE_BEFORE:
-        return False
-    return before in _ON_ITS_LINE
+        return 0
+    return int(before in _ON_ITS_LINE)
 
 
 def on_the_egos_line(tokens: list[str], i: int, end: int) -> bool:
@@ -822,7 +827,7 @@ def on_the_egos_line(tokens: list[str], i: int, end: int) -> bool:
     if ego_end is None:
         return False  # (not "coming straight at high speed": at no one)
     after = tokens[max(end, ego_end) : max(end, ego_end) + 2]
-    return _on_its_line_before(tokens, at) or after[:1] == ["head-on"] or after[:2] == ["head", "on"]
+    return _on_its_line_before(tokens, at) > 0 or after[:1] == ["head-on"] or after[:2] == ["head", "on"]
 
 
 #: The ego told of in the second or third person, as whom a road user travels at ("towards you",
