@@ -45,7 +45,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED
+from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED, WRONG_WAY_NOUNS
 from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.vocabulary import IN_LINE
 from vei_scenario.language.who import (
@@ -1894,8 +1894,9 @@ def _participial_apposition(tokens: list[str], kind_at: KindAt, known: Known) ->
 def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] | None:
     """What a bracket after a road user says when it only names that road user's type ("Vehicle B (white
     van)", "the other vehicle (a lorry)"): an apposition (", a white van ,") where it names a more exact
-    vehicle than a general one, nothing (an empty list) where it names the same type; None where the
-    bracket says anything else (another road user, "and", a verb)."""
+    vehicle than a general one, nothing (an empty list) where it names the same type, "wrong-way" where it
+    names a wrong-way driver ("(ghost driver)": what it does); None where the bracket says anything else
+    (another road user, "and", a verb)."""
     last = next((b for b in range(len(out) - 1, max(len(out) - 4, -1), -1) if kind_at(out, b)), None)
     outer = kind_at(out, last) if last is not None else None
     label = len(out) - 1 if out and (out[-1].isdigit() or len(out[-1]) == 1) else len(out)  # ("Vehicle B (...)")
@@ -1918,6 +1919,8 @@ def _type_gloss(out: list[str], inner: list[str], kind_at: KindAt) -> list[str] 
         for w in words[:head]
     ):
         return None
+    if " ".join(words) in WRONG_WAY_NOUNS:
+        return ["wrong-way"]  # ("NPC sedan (wrong-way driver)": what it does, as the noun says it on its own)
     if kind == outer[0] or (kind == "car" and outer[0] in VEHICLES) or (kind_of and kind in VEHICLES):
         return []
     if outer[0] == "car" and kind in VEHICLES:

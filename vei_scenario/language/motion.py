@@ -79,6 +79,15 @@ def in_the_ego_lane(words: str) -> bool:
     return any(a in _EGO_OWNER_WORDS and b in _WAYS for a, b in zip(said, said[1:]))
 
 
+def its_lane_the_egos(words: str, prev: str, said: set) -> bool:
+    """Whether "in its lane" (``words``) said right after the ego (``prev``) of a road user already
+    said to come at it (``said``: "oncoming") is the ego's lane ("coming towards the ego in its lane",
+    "rides at the test vehicle in its lane"): the possessive owns the nearest noun, the ego. Not
+    after anything else ("overtook the ego and stayed in its lane": its own, after its own verb), nor
+    of a road user going the ego's way ("rides ahead of the ego in its lane": one lane for both)."""
+    return [w for w in words.split() if w != "own"] == ["in", "its", "lane"] and prev == "ego" and "oncoming" in said
+
+
 #: What a road user coming at the ego in its lane may be said to do besides: go on, move about in
 #: that lane (a swerve said with no subject is often the narrator's), or swerve out of it at the last
 #: moment ("came head-on and swerved out"), as one going back to its side does.

@@ -878,12 +878,16 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if towards is not None:  # "coming on our lane", "heading at us": at the ego, in its lane
             words = " ".join(tokens[i:towards])
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=towards, det=det))
+            if sides.on_the_egos_line(tokens, i, towards):  # ("coming at us head-on": in the ego's lane)
+                clauses[-1][1].append(_Mention("over_line", None, words, i, prev, end=towards))
             i = towards
             continue
         at_ego = sides.coming_at_the_ego(tokens, i)
         if at_ego is not None:  # "came round the corner towards me": past where it comes, at the ego
             words = " ".join(tokens[i:at_ego])
             clauses[-1][1].append(_Mention("relation", "oncoming", words, i, prev, end=at_ego, det=det))
+            if sides.on_the_egos_line(tokens, i, at_ego):  # ("came straight at me": in the ego's lane)
+                clauses[-1][1].append(_Mention("over_line", None, words, i, prev, end=at_ego))
             i = at_ego
             continue
         half = sides.on_the_egos_half(tokens, i, _actor_word)
@@ -1192,6 +1196,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
             clauses[-1][1].append(_Mention(a_slot, a_value, adverb, i + 1, tok, end=i + 2))
+        if slot == "relation" and value == "oncoming" and sides.on_the_egos_line(tokens, i, i + used):
+            clauses[-1][1].append(_Mention("over_line", None, words, i, prev, end=i + used))  # ("came straight at")
         if toward_at is not None and slot == "behaviour":
             side = tokens[toward_at]
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
@@ -3945,8 +3951,10 @@ def _apply(m, who, r, link, added) -> None:
             a.along = a.along or (m.value == "ahead" and kerb_ride.same_heading(m.words))
             if m.value == "ahead" and not a.behaviours:
                 a.said.add("ahead_first")  # ("the car ahead of us swung out": where it is before it moves)
-            if m.value == "ahead" and motion.in_the_ego_lane(m.words):
-                a.said.add("in_ego_lane")  # ("in my lane": not only in front, in the ego's own lane)
+            if m.value == "ahead" and (
+                motion.in_the_ego_lane(m.words) or motion.its_lane_the_egos(m.words, m.prev, a.said)
+            ):
+                a.said.add("in_ego_lane")  # ("in my lane", "towards the ego in its lane": the ego's own lane)
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if m.value == "ahead" and m.words in ("following", "tailing", "behind"):
                 a.said.add("ego_behind")  # ("following a van", "we were behind a van": in the ego's lane)

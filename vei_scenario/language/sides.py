@@ -797,34 +797,77 @@ _EDGE = KERB_NOUNS | {"side", "gutter"}
 _EGO_AFTER = frozenset({"me", "us", "ego"})
 
 
+def _the_ego_after(tokens: list[str], i: int) -> int | None:
+    """Where the ego named right after "towards", "toward", "at" or "for" (token ``i``) ends ("at me",
+    "towards her", "for my car", "at the ego"), or None: that preposition is not aimed at the ego."""
+    if tokens[i] not in ("towards", "toward", "at", "for") or i + 1 >= len(tokens):
+        return None
+    after = tokens[i + 1]
+    if after in _EGO_AFTER or told_of_the_ego(tokens, i + 1):
+        return i + 2
+    if after in ("my", "our") and i + 2 < len(tokens) and tokens[i + 2] not in ("left", "right"):
+        return i + 3  # ("towards my car", "at our van")
+    return i + 3 if tokens[i + 1 : i + 3] == ["the", "ego"] else None
+
+
 def coming_at_the_ego(tokens: list[str], i: int) -> int | None:
     """Where a phrase ends that says a road user travels at the ego, starting at "towards", "toward",
     "at" or "for" (token ``i``) with the ego after it ("towards me", "straight at us", "for my car"),
     when a verb of travelling comes before it with no more than where it travels between ("came round
     the corner towards me", "came flying down the hill straight at me", "heading right for us"), or
     None. Why: the lexicon's "come towards" and "come at" hold only with nothing between, and writers
-    say the road or bend it comes along first. Not a move sideways ("swerved towards me": no verb of
+    say the road or bend it comes along first, often with a comma ("came round the corner, straight at
+    me"). Not a move sideways ("swerved towards me": no verb of
     travelling), nor coming out of, off or across a place ("came off the pavement towards me"), nor
     along the edge of the road ("riding down the side of the road toward me": it keeps to that edge)."""
-    if tokens[i] not in ("towards", "toward", "at", "for") or i + 1 >= len(tokens):
+    end = _the_ego_after(tokens, i)
+    if end is None:
         return None
-    after = tokens[i + 1]
-    if after in _EGO_AFTER or told_of_the_ego(tokens, i + 1):
-        end = i + 2
-    elif after in ("my", "our") and i + 2 < len(tokens) and tokens[i + 2] not in ("left", "right"):
-        end = i + 3  # ("towards my car", "at our van")
-    elif tokens[i + 1 : i + 3] == ["the", "ego"]:
-        end = i + 3
-    else:
-        return None
+    opens = i - 1 - _on_its_line_before(tokens, i)  # (the word before "straight at me")
     for k in range(i - 1, max(-1, i - _REACH - 1), -1):
+        if k == opens and tokens[k] == ",":
+            continue  # ("came round the corner, straight at me": a comma sets off how it comes)
         if tokens[k] in _NOT_ALONG or (tokens[k] in _EDGE and not _a_half_of_the_road(tokens, k)):
             return None  # (not "riding down the side of the road toward me": along the edge, its kerb's)
         verbs = set(lemmas(tokens[k]).get("VERB", ()))
-        if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs):
+        if verbs & _TRAVEL and (tokens[i] != "for" or "head" in verbs or _on_its_line_before(tokens, i) > 0):
             said_by_the_lexicon = k == i - 1 and bool(verbs & _LEXICON_TOWARDS.get(tokens[i], set()))
             return None if said_by_the_lexicon else end  # (right after "came" the lexicon's "come at" reads it)
     return None
+
+
+#: Words that say a road user comes at the ego on its very line, not merely from ahead ("straight at
+#: me", "right for us", "directly towards my car", "dead at me", "head-on at us").
+_ON_ITS_LINE = frozenset({"straight", "right", "directly", "direct", "dead", "square", "squarely", "smack", "head-on"})
+#: Words before "right" that make it a side ("on the right towards me", "to my right"), not a manner.
+_SIDE_BEFORE = frozenset({"the", "to", "on", "my", "our", "your", "his", "her", "its", "their", "from"})
+
+
+def _on_its_line_before(tokens: list[str], i: int) -> int:
+    """How many words before the preposition at token ``i`` say the road user comes on the ego's very
+    line ("straight at", "right for", "head on towards"), 0 where none: "right" only as a manner, not
+    a side ("on the right towards me")."""
+    before = tokens[i - 1] if i else ""
+    if i > 1 and tokens[i - 2 : i] == ["head", "on"]:
+        return 2
+    if before == "right" and i > 1 and tokens[i - 2] in _SIDE_BEFORE:
+        return 0
+    return int(before in _ON_ITS_LINE)
+
+
+def on_the_egos_line(tokens: list[str], i: int, end: int) -> bool:
+    """Whether a phrase that says a road user travels at the ego, from token ``i`` (its verb or
+    preposition) to ``end``, says it comes on the ego's own line: with "straight", "right",
+    "directly" or "dead" before the preposition ("came straight at me", "rode right at us", "heading
+    directly for my car") or "head-on" before or after it ("coming head-on at me", "came at us
+    head-on"). Why: one in its own lane comes towards the ego and goes by; only one in the ego's lane
+    comes at it on its line, so the writer's stress says head-on, the wrong way."""
+    at = next((k for k in range(i, end) if tokens[k] in ("towards", "toward", "at", "for")), None)
+    ego_end = None if at is None else _the_ego_after(tokens, at)
+    if ego_end is None:
+        return False  # (not "coming straight at high speed": at no one)
+    after = tokens[max(end, ego_end) : max(end, ego_end) + 2]
+    return _on_its_line_before(tokens, at) > 0 or after[:1] == ["head-on"] or after[:2] == ["head", "on"]
 
 
 #: The ego told of in the second or third person, as whom a road user travels at ("towards you",
