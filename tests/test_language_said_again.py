@@ -85,3 +85,54 @@ def test_a_road_user_brought_back_with_this_and_read_as_before_is_one(text: str)
 )
 def test_road_users_told_apart_stay_apart(text: str, n: int) -> None:
     assert len(read(text).actors) == n, kinds(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "I was doing 30 mph when out of nowhere a man, a man on an e-scooter, came off the kerb right in"
+            " front of me.",
+            ["e-scooter"],
+        ),
+        (
+            "Voice note: so I'm driving along at like 40 k and this guy, this guy riding a Lime, just cuts"
+            " across my bonnet from the left.",
+            ["e-scooter"],
+        ),
+        (
+            "Witness: the vehicle was travelling at about 20 mph when a lad, a lad on a pushbike, rode out"
+            " from the side road on its left.",
+            ["bicycle"],
+        ),
+        (
+            "Something came out of the dark at me, a kid, a kid on one of those scooters, straight across"
+            " the road. I was doing 50 km/h.",
+            ["e-scooter"],
+        ),
+    ],
+)
+def test_one_said_again_at_once_with_more_is_one(text: str, expected: list[str]) -> None:
+    """A speaker's self-repair, the same words said again at once and then told apart ("a man, a man on
+    an e-scooter"), names one road user: the fuller mention."""
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "Two scooters came off the kerb on the left, a scooter, a scooter and then a car behind them,"
+            " while I was doing 30 mph.",
+            3,
+        ),
+        (
+            "A car, a red car, pulled out of the side road on the left in front of me while I was doing 30 mph.",
+            1,
+        ),
+    ],
+)
+def test_self_repair_near_misses(text: str, expected: int) -> None:
+    """Near misses: the same words said again with no modifier after them (a count, "a scooter, a
+    scooter and ..."), and a repair that adds an adjective (already one road user), keep their counts."""
+    assert len(read(text).actors) == expected

@@ -276,6 +276,14 @@ _HEADS_UP = re.compile(
     r"\b(?:(?:just |quick |friendly )?an? )?(?:quick |friendly )?heads[- ]up"
     r"(?=\s*(?:[:,;!.\-\u2013\u2014]|(?:for|on|about|re|that|guys|everyone|all)\b|$))"
 )
+#: One person or thing said, then said again at once with what tells it apart (a speaker's self-repair:
+#: "a boy, a boy on a scooter", "this man, this man riding an e-scooter"): one mention, the fuller one.
+#: Only where the same words come back right after the comma and go on with a modifier; a list of two
+#: of a kind ("a car, a car and a van") goes on with no modifier and stays.
+_SAID_AGAIN_FULLER = re.compile(
+    r"\b(?:a|an|the|this|that|some) ((?:[a-z-]+ ){0,2}?[a-z-]+),\s+(?=(?:a|an|the|this|that|some) \1 "
+    r"(?:on|riding|in|with|wearing|carrying|pushing|who|that)\b)"
+)
 _SHORTHAND = [
     (re.compile(r"\bm/(?:bike|cycle)s?\b|\bm/c\b"), "motorbike"),
     (re.compile(r"\bp/cycle\b|\bpedal cycle\b"), "bicycle"),
@@ -755,6 +763,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _LEAD_SUBJECT.sub(lambda m: _lead_as_a_noun(m, known_noun), text)
     text = _acronyms_defined(text, known_noun)
     text = _HEADS_UP.sub("note", text)
+    text = _SAID_AGAIN_FULLER.sub("", text)  # ("a boy, a boy on a scooter": one boy, on a scooter)
     text = _PARTICIPLE_OPENING.sub(lambda m: _with_article(m, known_noun), text)
     for pattern, repl in _SHORTHAND:
         text = pattern.sub(repl, text)
