@@ -92,12 +92,24 @@ def test_the_one_vehicle_that_strikes_a_walker_or_rider_in_a_report_is_the_ego(t
 @pytest.mark.parametrize(
     "text",
     [
-        "A car overtakes a cyclist on a straight road.",
         "A cyclist rides along the kerb and a car cuts in close in front of him.",
     ],
 )
 def test_a_vehicle_that_strikes_no_one_stays_a_road_user(text):
     assert "car" in _kinds(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A car overtakes a cyclist on a straight road.",
+        "A lorry overtook a cyclist on the bend and the lorry driver waved.",
+    ],
+)
+def test_the_one_vehicle_that_overtakes_a_rider_with_no_narrator_is_the_ego(text):
+    """With no narrator at a wheel, the one vehicle that passes a rider is the vehicle the story is
+    about: the ego, going on past the rider."""
+    assert _kinds(text) == ["bicycle"]
 
 
 # What the narrator gets into is the narrator's vehicle.

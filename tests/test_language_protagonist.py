@@ -138,7 +138,6 @@ def test_a_vehicle_driver_who_reacts_is_the_ego_vehicle(text, kinds):
 @pytest.mark.parametrize(
     "text",
     [
-        "A lorry overtook a cyclist on the bend and the lorry driver waved.",
         "The bus driver was parked at the stand when a man on a scooter rode into the shelter.",
     ],
 )

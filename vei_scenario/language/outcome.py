@@ -1219,8 +1219,10 @@ def _ego_acts(words: list[str], i: int) -> str | None:
     if _off_the_road(words, i):
         return "evade"
     if lem & _EVADE:
-        if lem & {"slam", "stamp", "jump", "stand", "jam"} and not {"on", "brake", "brakes"} & set(window):
-            return None
+        if lem & {"slam", "stamp", "jump", "stand", "jam"} and not (
+            "on" in words[i + 1 : i + 3] or {"brake", "brakes", "anchors", "pedal"} & set(words[i + 1 : i + 5])
+        ):
+            return None  # (a brake only with "on" right after or the brakes named: not "stood at the kerb on my right")
         return "evade"
     if lem & _WORKING and not words[i].endswith("ing") and _brakes_worked(words, i):
         if set(window) & _MILD or lem & {"tap", "dab", "feather"}:
