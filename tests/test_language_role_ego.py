@@ -38,6 +38,7 @@ NEAR_MISSES = [
     # (a hero said in scorn is another road user; a sports player on foot is a walker)
     ("Some absolute hero in an Audi overtook me at 80 km/h on the bend.", ["car"]),
     ("I was doing 30 km/h when a football player ran into the road after his ball.", ["pedestrian"]),
+    ("Some hero cyclist ran the red in front of me while I was doing 40 km/h.", ["bicycle"]),
 ]
 
 
@@ -49,4 +50,16 @@ def test_a_role_word_said_otherwise_is_no_ego(text: str, users: list[str]) -> No
 def test_the_target_vehicle_stays_a_road_user() -> None:
     text = "ALKS vehicle at 60 km/h. The target vehicle ahead at 30 km/h brakes hard."
     assert ego_kph(text) == 60.0
+    assert kinds(text) == ["car"]
+
+
+def test_the_role_noun_said_again_is_the_ego() -> None:
+    text = "Hero bus at 25 km/h round the roundabout. A cyclist cuts across the front of the bus; bus brakes."
+    assert ego_kph(text) == 25.0
+    assert kinds(text) == ["bicycle"]
+
+
+def test_another_of_the_role_kind_keeps_its_own_mentions() -> None:
+    text = "Hero taxi at 30 km/h. A second taxi pulls out of a rank ahead; the taxi stops."
+    assert ego_kph(text) == 30.0
     assert kinds(text) == ["car"]

@@ -427,8 +427,17 @@ def _names_a_role(text: str, known_noun) -> bool:
     return bool(
         _ROLE_LABEL.search(text)
         or _OUR_HERO.search(text)
-        or any(known_noun(m.group(1).lower()) for m in _ROLE_BEFORE.finditer(text))
+        or any(
+            known_noun(m.group(1).lower()) and _no_other_before(text, m.start()) for m in _ROLE_BEFORE.finditer(text)
+        )
     )
+
+
+def _no_other_before(text: str, at: int) -> bool:
+    """Whether the role word at ``at`` opens its phrase ("hero van", "the player's car", "(hero BMW"), not
+    one said of somebody ("some hero cyclist", "a local hero driver"): praise or scorn, not a role."""
+    before = (text[:at].split()[-1:] or ["."])[0].lower()
+    return not before[-1:].isalpha() or before in _THE_OR_LINKING or before == "our"
 
 
 def _role_is_the_ego(text: str, known_noun) -> str:
