@@ -433,10 +433,16 @@ def _names_a_role(text: str, known_noun) -> bool:
     )
 
 
+def _word_before(text: str, at: int) -> str:
+    """The word (or mark) right before ``at``, lowercased; "." at the start (a short look back only, so
+    that asking it of every mention stays linear in the text)."""
+    return (text[max(at - 40, 0) : at].split()[-1:] or ["."])[0].lower()
+
+
 def _no_other_before(text: str, at: int) -> bool:
     """Whether the role word at ``at`` opens its phrase ("hero van", "the player's car", "(hero BMW"), not
     one said of somebody ("some hero cyclist", "a local hero driver"): praise or scorn, not a role."""
-    before = (text[:at].split()[-1:] or ["."])[0].lower()
+    before = _word_before(text, at)
     return not before[-1:].isalpha() or before in _THE_OR_LINKING or before == "our"
 
 
@@ -471,7 +477,7 @@ def _role_noun_again(text: str, noun: str) -> str:
     if not said or noun in ("car", "vehicle"):
         return text  # ("car" and "vehicle" are said of every vehicle: another may be meant)
     for m in said:
-        before = (text[: start + m.start()].split()[-1:] or ["."])[0].lower()
+        before = _word_before(text, start + m.start())
         if before[-1:].isalpha() and before not in _THE_OR_LINKING:
             return text  # ("a taxi", "another bus", "stunt taxi", "parked bus": another of its kind)
     again = re.compile(rf"\b(?:the\s+)?{re.escape(noun)}\b", re.IGNORECASE)
