@@ -7,6 +7,8 @@ from __future__ import annotations
 import pytest
 
 from tests.reading_of import ego_kph, kinds
+from vei_scenario.language.normalise import normalise
+from vei_scenario.language.reader import _actor_noun_in
 
 ROLE_NAMED = [
     # (a film's stunt sheet, a game designer's encounter, a sim spec, a regulation paraphrase; each with
@@ -63,3 +65,8 @@ def test_another_of_the_role_kind_keeps_its_own_mentions() -> None:
     text = "Hero taxi at 30 km/h. A second taxi pulls out of a rank ahead; the taxi stops."
     assert ego_kph(text) == 30.0
     assert kinds(text) == ["car"]
+
+
+def test_a_distance_after_the_role_is_kept() -> None:
+    text = "Player vehicle: hatchback at 30 km/h. Trigger: player within 20m of the crossing -> NPC pedestrian crosses."
+    assert "within 20 m" in normalise(text.lower(), _actor_noun_in)

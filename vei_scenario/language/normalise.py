@@ -462,7 +462,7 @@ def _role_is_the_ego(text: str, known_noun) -> str:
         if after is not None and known_noun(after.lower()):
             nouns.append(after.lower())
             return "the ego"
-        return ("the ego's" if m.group(1) else "the ego") + (f" {after}" if after is not None else "")
+        return ("the ego's" if m.group(1) else "the ego") + (f" {after}{m.group(3) or ''}" if after is not None else "")
 
     text = re.sub(r"\bthe ego\s*=", "the ego:", _ROLE_MENTION.sub(ego, text))
     return _role_noun_again(text, nouns[0]) if nouns else text
