@@ -404,6 +404,94 @@ def _the_car_is_the_ego(text: str) -> str:
     return text[:first] + rest
 
 
+#: Role words of the one vehicle a film's run sheet ("hero car", "our hero") or a game's encounter ("player
+#: vehicle", "Player: delivery van") is built round: its vehicle under test, as the ego is a spec's.
+_ROLE = r"(?:hero|player)"
+#: The role word before a road-user word ("hero van", "the player's car"): the vehicle it names.
+_ROLE_BEFORE = re.compile(rf"\b(?:(?:the|our)\s+)?{_ROLE}(?:'s)?\s+([a-z][a-z-]*)", re.IGNORECASE)
+#: The role word opening a line or an item as its label ("Player: tuk-tuk", "player = muscle car").
+_ROLE_LABEL = re.compile(rf"(?:^|(?<=[\n.;|/-]))\s*(?:the\s+)?{_ROLE}\s*[:=]", re.MULTILINE | re.IGNORECASE)
+#: "our hero": a story's own vehicle ("the little bus (our hero)", "Our hero, a tractor, ...").
+_OUR_HERO = re.compile(r"\bour\s+hero\b", re.IGNORECASE)
+#: Every mention of the role, once the text names one ("hero's right", "in front of the player"), with
+#: the word after it.
+_ROLE_MENTION = re.compile(
+    rf"\b(?:(?:the|our)\s+)?{_ROLE}('s)?(?:\s+([a-z][a-z-]*)(\s+[a-z]{{0,3}}-?\d+[a-z]?\b)?)?", re.IGNORECASE
+)
+#: Words before a vehicle's noun said again that bring in no other ("the bus", "of bus", "and taxi").
+_THE_OR_LINKING = frozenset("the of to into onto in on at by behind past with and then so but as for from than".split())
+#: A regulation's automated lane keeping system (UN R157) and the vehicle with it: the vehicle under test.
+_ALKS = re.compile(
+    r"\b(?:the\s+)?(?:vehicle|car)\s+with\s+(?:an?\s+|the\s+|its\s+)?(?:active\s+)?alks\b|"
+    r"\b(?:the\s+|an?\s+)?alks(?:[- ]equipped)?(?:\s+(?:vehicle|car))?\b",
+    re.IGNORECASE,
+)
+
+
+def _names_a_role(text: str, known_noun) -> bool:
+    """Whether ``text`` names its vehicle by a role: the role word before a road-user word, as a
+    label, or "our hero" (not "some hero in an Audi", said of another in scorn, nor a football player,
+    whom no road-user word follows)."""
+    return bool(
+        _ROLE_LABEL.search(text)
+        or _OUR_HERO.search(text)
+        or any(
+            known_noun(m.group(1).lower()) and _no_other_before(text, m.start()) for m in _ROLE_BEFORE.finditer(text)
+        )
+    )
+
+
+def _word_before(text: str, at: int) -> str:
+    """The word (or mark) right before ``at``, lowercased; "." at the start (a short look back only, so
+    that asking it of every mention stays linear in the text)."""
+    return (text[max(at - 40, 0) : at].split()[-1:] or ["."])[0].lower()
+
+
+def _no_other_before(text: str, at: int) -> bool:
+    """Whether the role word at ``at`` opens its phrase ("hero van", "the player's car", "(hero BMW"), not
+    one said of somebody ("some hero cyclist", "a local hero driver"): praise or scorn, not a role."""
+    before = _word_before(text, at)
+    return not before[-1:].isalpha() or before in _THE_OR_LINKING or before == "our"
+
+
+def _role_is_the_ego(text: str, known_noun) -> str:
+    """ "Hero van at 20 km/h ... from hero's left", "Player: city bus, ...", "ALKS follows a lead car":
+    the vehicle a run sheet, an encounter or a regulation's test is built round is the ego, in every
+    mention; a road-user word right after the role ("hero van", "the player's car") is that vehicle."""
+    text = re.sub(r"\balks\s+lane\b", "the ego's lane", text, flags=re.IGNORECASE)
+    text = _ALKS.sub("the ego", text)
+    if not _names_a_role(text, known_noun):
+        return text
+
+    nouns: list[str] = []
+
+    def ego(m: re.Match) -> str:
+        after = m.group(2)
+        if after is not None and known_noun(after.lower()):
+            nouns.append(after.lower())
+            return "the ego"
+        return ("the ego's" if m.group(1) else "the ego") + (f" {after}{m.group(3) or ''}" if after is not None else "")
+
+    text = re.sub(r"\bthe ego\s*=", "the ego:", _ROLE_MENTION.sub(ego, text))
+    return _role_noun_again(text, nouns[0]) if nouns else text
+
+
+def _role_noun_again(text: str, noun: str) -> str:
+    """ "Hero taxi eastbound ... into the taxi's path, taxi brakes": the noun the role named, said again
+    with "the" or bare, is the same vehicle; unless another of its kind is brought in after the role
+    ("a taxi", "stunt taxi 2", "the parked taxi"), when which one is meant is unclear."""
+    start = text.find("the ego")
+    said = list(re.finditer(rf"\b{re.escape(noun)}\b", text[start:], re.IGNORECASE))
+    if not said or noun in ("car", "vehicle"):
+        return text  # ("car" and "vehicle" are said of every vehicle: another may be meant)
+    for m in said:
+        before = _word_before(text, start + m.start())
+        if before[-1:].isalpha() and before not in _THE_OR_LINKING:
+            return text  # ("a taxi", "another bus", "stunt taxi", "parked bus": another of its kind)
+    again = re.compile(rf"\b(?:the\s+)?{re.escape(noun)}\b", re.IGNORECASE)
+    return text[:start] + again.sub("the ego", text[start:])
+
+
 _NOMINAL_VERBS = {
     "lane change": "changes lane",
     "lane-change": "changes lane",
@@ -815,6 +903,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     text = _the_car_is_the_ego(text)
+    text = _role_is_the_ego(text, known_noun)
     text = _observer(text, known_noun)
     for pattern in _EGO_ALIASES:
         text = pattern.sub("the ego", text)
