@@ -99,3 +99,41 @@ def test_a_plural_label_is_no_contact(text):
 )
 def test_a_road_user_met_stays_a_collision(text):
     assert _outcome(text) == "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Dad took me out on the country lanes. A tractor came round the bend and I pulled over, all fine.",
+        "My instructor took me out on the dual carriageway today.",
+        "Mum takes us out on the motorway on Sundays.",
+        "Grandad took me out round the estate in his Corsa.",
+        "My brother took me out after tea for a practice.",
+    ],
+)
+def test_one_of_the_narrators_party_taking_them_out_is_a_drive(text):
+    assert _outcome(text) != "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A van took me out on the roundabout.", "The cyclist took me out.", "Dad took out a cyclist on the bend."],
+)
+def test_being_taken_out_by_a_road_user_stays_a_collision(text):
+    assert _outcome(text) == "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "She wobbled and came off on her own: grazed knees and a cut elbow.",
+        "The rider fell by himself, scraped palms, nothing worse.",
+        "Kid tripped on the kerb in front of us, bumped head but fine.",
+    ],
+)
+def test_an_injury_said_before_a_bare_body_part_is_no_contact(text):
+    assert _outcome(text) != "collision"
+
+
+def test_a_blow_to_a_part_with_its_owner_named_stays_a_collision():
+    assert _outcome("My mirror clipped his elbow as I passed.") == "collision"

@@ -417,7 +417,7 @@ def _is_contact(words: list[str], i: int) -> bool:
     if "wipe" in lem and "out" in words[i + 1 : i + 4]:
         k = words.index("out", i + 1)  # ("wiped out the cyclist", "wiped him out"; "wiped out on the ice": fell)
         return names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
-    if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i):
+    if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i) and not _party_outing(words, i):
         return True  # ("took out a jogger", "knocked the child over")
     if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
@@ -445,6 +445,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         and ("head-on" in words[i + 1 : i + 6] or "head on" in " ".join(words[i + 1 : i + 7]))
     ):
         return True  # ("met the tractor head-on", "they met head on")
+    if _injury_adjective(words, i):
+        return False  # ("grazed knees and a cut elbow": an injury's adjective before a bare body part)
     if lem & _CONTACT_VERBS and words == [w] and w.endswith("s"):
         return False  # ("Tags: #cyclist": a plural noun as a label, no subject and no object)
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
@@ -716,6 +718,17 @@ def _phrasal_object(words: list[str], i: int) -> bool:
     return names_road_user(obj)
 
 
+#: Who takes a learner out: the narrator's own party and their teachers.
+_TAKERS_OUT = V.PARTY | frozenset(("instructor", "teacher", "examiner", "tutor", "coach"))
+
+
+def _party_outing(words: list[str], i: int) -> bool:
+    """Whether "take" at ``i`` is one of the narrator's party or their instructor taking the narrator
+    out ("Dad took me out on the country lanes", "my instructor takes us out"): a drive, not a blow
+    ("a van took me out on the roundabout", "Dad took out a cyclist" stay blows)."""
+    return i > 0 and words[i - 1] in _TAKERS_OUT and words[i + 1 : i + 3] in (["me", "out"], ["us", "out"])
+
+
 #: Words after "took someone out" that make it an outing ("out for practice", "out to the coast").
 _OUTING = frozenset(("for", "to", "again"))
 
@@ -749,7 +762,18 @@ def _vehicle_part(after: list[str]) -> bool:
 
 
 #: The parts of a body one touches another road user with ("caught it with my knee").
-_BODY_PARTS = frozenset(("knee", "elbow", "shoulder", "arm", "hand", "leg", "foot", "hip", "head", "boot", "helmet"))
+_BODY_PARTS = frozenset(("knee", "elbow", "shoulder", "arm", "hand", "leg", "foot", "hip", "head", "boot", "helmet",
+                         "palm", "shin", "chin", "wrist", "ankle", "face", "rib", "finger"))  # fmt: skip
+
+
+def _injury_adjective(words: list[str], i: int) -> bool:
+    """Whether a verb of contact at ``i`` in "-ed" stands before a bare body part as an injury's
+    adjective ("grazed knees", "scraped palms", "bumped head"), not a manner ("crashed head first into
+    the windscreen", "smashed head on")."""
+    w, part, after = words[i], words[i + 1 : i + 2], words[i + 2 : i + 3]
+    if not (_lemmas(w) & _CONTACT_VERBS and w.endswith("ed") and part):
+        return False
+    return (part[0] in _BODY_PARTS or part[0][:-1] in _BODY_PARTS) and after not in (["first"], ["on"], ["into"])
 
 
 def _touched_with_a_part(words: list[str], i: int) -> bool:
