@@ -294,12 +294,49 @@ _FURNITURE = frozenset(
 _ORDINALS = frozenset(("st", "nd", "rd", "th"))
 
 
+#: Words between a verb and the furniture it meets ("swerved straight into the hedge", "went up onto the kerb").
+_TO_FURNITURE = frozenset(("into", "onto", "against", "straight", "right", "up", "off", "on"))
+
+
 def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> bool:
     """Whether the contact verb at ``i`` hits street furniture (its object's head) while its sentence
-    so far tells of escaping someone ("I swerved to miss him and hit the kerb")."""
-    head = next((w for w in words[i + 1 : i + 5] if w not in _DETERMINERS and w not in _POSSESSIVES), "")
+    so far tells of escaping someone ("I swerved to miss him and hit the kerb", "swerved into the
+    hedge to miss him"), or the one who hits it is a walker or a rider ("a lad on a scooter came off
+    the pavement, hit the kerb", "she wobbled, clipped the curb and came off"): their own fall, no
+    contact with the ego (a vehicle that "hit the kerb and rolled" may be the ego's own crash)."""
+    skip = _DETERMINERS | _POSSESSIVES | _TO_FURNITURE
+    head = next((w for w in words[i + 1 : i + 6] if w not in skip), "")
+    if head not in _FURNITURE:
+        return False
     escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
-    return head in _FURNITURE and escaping
+    return escaping or _walker_or_rider_before(sentence[: len(sentence) - len(words) + i])
+
+
+#: The kinds of road user that are walkers or riders: never the ego's own vehicle.
+_UNPROTECTED = ("pedestrian", "bicycle", "e-scooter")
+#: The subject pronouns of a third person, and the ego's own.
+_THIRD_SUBJECTS = frozenset(("he", "she", "they"))
+
+
+@lru_cache(maxsize=1)
+def _unprotected_heads() -> frozenset[str]:
+    """The last words of the lexicon's nouns of walkers and riders ("jogger", "kid", "cyclist", "lime")."""
+    phrases = [p for kind in _UNPROTECTED for p in L.ACTOR_NOUNS[kind]] + list(L.GENERIC_PERSONS)
+    return frozenset(p.split()[-1] for p in phrases) | {"rider", "cyclist", "lad", "boy", "girl", "kid"}
+
+
+def _walker_or_rider_before(before: list[str]) -> bool:
+    """Whether the nearest subject said before a verb (``before``: its sentence up to it) is a walker
+    or a rider (a third person's pronoun, or a noun of a walker or a rider), not the ego or a vehicle.
+    Object pronouns ("on her left") and other nouns are passed over."""
+    for w in reversed(before):
+        if w in _EGO_HEADS:
+            return False
+        if w in _THIRD_SUBJECTS or w in _unprotected_heads():
+            return True
+        if _road_user_word(w):
+            return False  # ("the pickup did not stop, hit the kerb": a vehicle, maybe the ego's)
+    return False
 
 
 def _meets_road_user(after: list[str]) -> bool:
@@ -380,7 +417,7 @@ def _is_contact(words: list[str], i: int) -> bool:
     if "wipe" in lem and "out" in words[i + 1 : i + 4]:
         k = words.index("out", i + 1)  # ("wiped out the cyclist", "wiped him out"; "wiped out on the ice": fell)
         return names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
-    if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i):
+    if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i) and not _party_outing(words, i):
         return True  # ("took out a jogger", "knocked the child over")
     if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
         return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
@@ -408,6 +445,10 @@ def _is_contact(words: list[str], i: int) -> bool:
         and ("head-on" in words[i + 1 : i + 6] or "head on" in " ".join(words[i + 1 : i + 7]))
     ):
         return True  # ("met the tractor head-on", "they met head on")
+    if _injury_adjective(words, i):
+        return False  # ("grazed knees and a cut elbow": an injury's adjective before a bare body part)
+    if lem & _CONTACT_VERBS and words == [w] and w.endswith("s"):
+        return False  # ("Tags: #cyclist": a plural noun as a label, no subject and no object)
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
@@ -589,10 +630,40 @@ def _into_road_user(words: list[str], j: int) -> bool:
         chunk.append(w)
     if not chunk or set(chunk) & _PLACES:
         return False  # ("into the right lane", "into our path")
+    if _no_thing_met(chunk):
+        return False  # ("into the crosswalk", "gone into the dark", "tucked into the sun visor")
     if set(chunk) & _PARTS:
         return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
     nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
     return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
+
+
+#: The places of a road and beside it one rides or walks into, over the ones of :data:`_PLACES`
+#: ("rode into the crosswalk", "pulled into the forecourt").
+_ENTERED = frozenset(
+    ("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan", "cycleway", "bikeway", "busway", "ramp",
+     "slip", "sliproad", "slip-road", "forecourt", "yard", "gateway", "gate", "field", "alley", "alleyway", "tunnel",
+     "underpass", "median", "island", "refuge", "layby", "box", "filter", "bus-stop", "garage", "estate")
+)  # fmt: skip
+#: Light, dark and weather one goes into: nothing is met ("gone into the dark", "rode off into the rain").
+_LIGHT_AND_DARK = frozenset(
+    ("dark", "darkness", "night", "distance", "fog", "mist", "murk", "gloom", "shadow", "shadows", "shade", "sun",
+     "sunlight", "sunshine", "glare", "sunset", "sunrise", "dusk", "rain", "snow", "spray", "haze", "smoke",
+     "headlights", "beam", "beams", "wind", "storm", "downpour")
+)  # fmt: skip
+#: The vehicle's own controls and fittings things are put into ("tucked into the sun visor", "into the glovebox").
+_CONTROLS = frozenset(
+    ("visor", "dashboard", "dash", "glovebox", "glove", "footwell", "seat", "seats", "ignition", "gear", "gears",
+     "gearbox", "reverse", "neutral", "cupholder", "holder", "console", "pocket", "cradle", "socket", "slot")
+)  # fmt: skip
+
+
+def _no_thing_met(chunk: list[str]) -> bool:
+    """Whether the noun phrase ``chunk`` after "into" names a place, light or dark, or the vehicle's
+    own fittings, with no road user or part of one after that word ("into the crosswalk against the
+    light", "into the night"; not "into the dark blue van", where "dark" only modifies the van)."""
+    k = next((k for k, w in enumerate(chunk) if w in _ENTERED | _LIGHT_AND_DARK | _CONTROLS), None)
+    return k is not None and not any(_road_user_word(w) or w in _PARTS for w in chunk[k + 1 :])
 
 
 #: Directions said after a verb of motion; "left" is also the past of "leave".
@@ -647,6 +718,17 @@ def _phrasal_object(words: list[str], i: int) -> bool:
     return names_road_user(obj)
 
 
+#: Who takes a learner out: the narrator's own party and their teachers.
+_TAKERS_OUT = V.PARTY | frozenset(("instructor", "teacher", "examiner", "tutor", "coach"))
+
+
+def _party_outing(words: list[str], i: int) -> bool:
+    """Whether "take" at ``i`` is one of the narrator's party or their instructor taking the narrator
+    out ("Dad took me out on the country lanes", "my instructor takes us out"): a drive, not a blow
+    ("a van took me out on the roundabout", "Dad took out a cyclist" stay blows)."""
+    return i > 0 and words[i - 1] in _TAKERS_OUT and words[i + 1 : i + 3] in (["me", "out"], ["us", "out"])
+
+
 #: Words after "took someone out" that make it an outing ("out for practice", "out to the coast").
 _OUTING = frozenset(("for", "to", "again"))
 
@@ -680,7 +762,18 @@ def _vehicle_part(after: list[str]) -> bool:
 
 
 #: The parts of a body one touches another road user with ("caught it with my knee").
-_BODY_PARTS = frozenset(("knee", "elbow", "shoulder", "arm", "hand", "leg", "foot", "hip", "head", "boot", "helmet"))
+_BODY_PARTS = frozenset(("knee", "elbow", "shoulder", "arm", "hand", "leg", "foot", "hip", "head", "boot", "helmet",
+                         "palm", "shin", "chin", "wrist", "ankle", "face", "rib", "finger"))  # fmt: skip
+
+
+def _injury_adjective(words: list[str], i: int) -> bool:
+    """Whether a verb of contact at ``i`` in "-ed" stands before a bare body part as an injury's
+    adjective ("grazed knees", "scraped palms", "bumped head"), not a manner ("crashed head first into
+    the windscreen", "smashed head on")."""
+    w, part, after = words[i], words[i + 1 : i + 2], words[i + 2 : i + 3]
+    if not (_lemmas(w) & _CONTACT_VERBS and w.endswith("ed") and part):
+        return False
+    return (part[0] in _BODY_PARTS or part[0][:-1] in _BODY_PARTS) and after not in (["first"], ["on"], ["into"])
 
 
 def _touched_with_a_part(words: list[str], i: int) -> bool:
