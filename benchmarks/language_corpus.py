@@ -71,6 +71,8 @@ FIRST = {
     "language_independent_z18.json": ((50, 50, 10, 46), "sealed for two rounds of reader work"),
     "language_independent_z19.json": ((50, 50, 3, 42), "sealed for two rounds of reader work"),
     "language_independent_z20.json": ((50, 50, 23, 49), "sealed for two rounds of reader work"),
+    "language_independent_z21.json": ((50, 50, 9, 45), "sealed for two rounds of reader work"),
+    "language_independent_z22.json": ((50, 50, 14, 46), "sealed for two rounds of reader work"),
 }
 
 

@@ -87,6 +87,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z18.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z19.json": (50, 3),
     ROOT / "tests" / "data" / "language_independent_z20.json": (50, 24),
+    ROOT / "tests" / "data" / "language_independent_z21.json": (50, 9),
+    ROOT / "tests" / "data" / "language_independent_z22.json": (50, 15),
 }
 
 
