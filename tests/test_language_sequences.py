@@ -82,6 +82,20 @@ def test_a_road_user_letting_the_ego_go_gives_way(text):
     assert _behaviours(text) == ["give_way"]
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 40 km/h. An e-scooter rider swerves out across the road ahead. Let the ego's braking decide.",
+        "Test car does 30 mph; a kid on a scooter cuts across in front of it. We let the car's AEB handle it.",
+        "I was doing 25 mph when a cyclist crossed in front of me. Let my brakes do the work, I thought.",
+    ],
+)
+def test_letting_the_egos_own_system_act_is_no_giving_way(text):
+    """ "Let the ego's braking decide" lets the ego's system act, not the ego go: the road user that
+    crosses gives no way."""
+    assert "give_way" not in _behaviours(text)
+
+
 #: Euro NCAP codes by their grammar: what each configuration is, whatever target it names.
 _CODES = [
     ("CCRs", "car", "ahead", ["stop"], None),

@@ -767,6 +767,7 @@ def lets_the_ego_go(clauses: list, tokens: list[str]) -> list:
             and nxt.value == "ego"
             and all(t in ("the", "a") for t in tokens[m.end : nxt.start])
             and after < len(tokens)
+            and tokens[after] not in ("'s", "s")  # (the ego's own: "let the ego's braking decide" lets no one go)
             and (tokens[after] in _GO_WORDS or "VERB" in lemmas(tokens[after]))
         ):
             end = after + 1 + (tokens[after] == "to")  # ("allows the ego to pass": through its verb)
