@@ -27,7 +27,7 @@ from typing import Protocol
 
 from vei_scenario.language.discourse import DETERMINERS
 from vei_scenario.language.reading import ActorSpec, Reading
-from vei_scenario.language.said_again import plural
+from vei_scenario.language.said_again import fold_into, plural, without
 
 #: Determiners that bring a road user in as new.
 _NEW = frozenset(("a", "an"))
@@ -148,14 +148,6 @@ def merge_heading_named(actors: list, reading: Reading, tokens: list[str]) -> li
     for j in range(len(specs)):
         if j in drop or (k := _heading_said(actors, specs, tokens, j)) is None:
             continue
-        told = specs[k]
-        told.speed_mps = specs[j].speed_mps if told.speed_mps is None else told.speed_mps
-        told.distance_m = specs[j].distance_m if told.distance_m is None else told.distance_m
+        fold_into(specs[k], specs[j])
         drop.add(j)
-    if not drop:
-        return actors
-    for s in specs:
-        if s.obstacle is not None:
-            s.obstacle -= sum(1 for k in drop if k < s.obstacle)
-    reading.actors = [s for k, s in enumerate(specs) if k not in drop]
-    return [a for k, a in enumerate(actors) if k not in drop]
+    return without(actors, reading, drop)

@@ -82,14 +82,25 @@ def merge_said_again(actors: list, reading: Reading) -> list:
         )
         if first is None:
             continue
-        target = specs[first]
-        target.speed_mps = spec.speed_mps if target.speed_mps is None else target.speed_mps
-        target.distance_m = spec.distance_m if target.distance_m is None else target.distance_m
+        fold_into(specs[first], spec)
         drop.add(k)
+    return without(actors, reading, drop)
+
+
+def fold_into(kept: ActorSpec, told: ActorSpec) -> None:
+    """Give ``kept`` the speed and the distance ``told`` states where ``kept`` states none: one road
+    user said twice keeps what either telling says of it."""
+    kept.speed_mps = told.speed_mps if kept.speed_mps is None else kept.speed_mps
+    kept.distance_m = told.distance_m if kept.distance_m is None else kept.distance_m
+
+
+def without(actors: list, reading: Reading, drop: set[int]) -> list:
+    """``actors`` and ``reading.actors`` without the tellings at the indices ``drop``, and each
+    obstacle index (a road user another reveals) moved down past those dropped before it."""
     if not drop:
         return actors
-    for s in specs:
+    for s in reading.actors:
         if s.obstacle is not None:
             s.obstacle -= sum(1 for k in drop if k < s.obstacle)
-    reading.actors = [s for k, s in enumerate(specs) if k not in drop]
+    reading.actors = [s for k, s in enumerate(reading.actors) if k not in drop]
     return [a for k, a in enumerate(actors) if k not in drop]
