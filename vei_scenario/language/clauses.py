@@ -19,6 +19,14 @@ def sentence_start(tokens: list[str], i: int, ends: frozenset[str] = SENTENCE_EN
     return i
 
 
+def sentence_stop(tokens: list[str], i: int, ends: frozenset[str] = SENTENCE_END) -> int:
+    """The index just past the last token of the sentence that holds token ``i`` (the first of ``ends``
+    from ``i`` on, or the end of ``tokens``): with :func:`sentence_start`, the sentence's span."""
+    while i < len(tokens) and tokens[i] not in ends:
+        i += 1
+    return i
+
+
 def split(tokens: Iterable[str], breaks: frozenset[str]) -> list[tuple[list[str], bool]]:
     """The non-empty clauses of ``tokens`` cut at each of ``breaks`` (punctuation or conjunctions, left
     out of the clauses), each with whether it opens its sentence (nothing but breaks before it since

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
-from vei_scenario.language.clauses import sentence_start
+from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.lemmas import lemmas
@@ -661,13 +661,7 @@ def counterfactual(tokens: list[str], i: int) -> bool:
     "she would have been doing about 40", "could have been going 50": someone's real speed, guessed), and
     not a plain past perfect ("I had been doing 50 before the lights") or "had" as a verb ("Had a fright
     coming home at 20 mph"), which have no "if" and no "had <subject> been"."""
-    start = i
-    while start > 0 and tokens[start - 1] not in _CLAUSE_BOUNDS:
-        start -= 1
-    stop = i
-    while stop < len(tokens) and tokens[stop] not in _CLAUSE_BOUNDS:
-        stop += 1
-    clause = tokens[start:stop]
+    clause = tokens[sentence_start(tokens, i, _CLAUSE_BOUNDS) : sentence_stop(tokens, i, _CLAUSE_BOUNDS)]
     if clause[:1] == ["had"] and "been" in clause[2:5]:  # ("had the car been ...": not "Had a fright, doing 20")
         return True
     if "had" in clause and "if" in clause[: clause.index("had")]:
@@ -730,9 +724,7 @@ def limits_alone(tokens: list[str], speeds: set[int], skipped: set[int]) -> set[
     another speed ("doing 50 in a 60 zone") is only the road's."""
     out = set()
     for i in skipped:
-        start, stop = sentence_start(tokens, i, SENTENCE_END), i
-        while stop < len(tokens) and tokens[stop] not in SENTENCE_END:
-            stop += 1
+        start, stop = sentence_start(tokens, i, SENTENCE_END), sentence_stop(tokens, i, SENTENCE_END)
         if not any(start <= j < stop for j in speeds - skipped):
             out.add(i)
     return out

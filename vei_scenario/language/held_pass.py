@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from vei_scenario.language.clauses import SENTENCE_END, sentence_start
+from vei_scenario.language.clauses import SENTENCE_END, sentence_start, sentence_stop
 from vei_scenario.language.discourse import DETERMINERS, VULNERABLE
 
 #: The mark a holding back or an overtake said free of the road user carries to the pass over the reading.
@@ -111,10 +111,7 @@ def said_within(tokens: list[str], span: tuple[int, int] | None, at: int | None)
     said there is the ego's, whose the holding back and the pass are."""
     if span is None or at is None or at < span[0]:
         return False
-    end = span[1]
-    while end < len(tokens) and tokens[end] not in SENTENCE_END:
-        end += 1
-    return at < end
+    return at < sentence_stop(tokens, span[1], SENTENCE_END)
 
 
 def egos_hold_and_pass(behaviours: list, behind: bool) -> tuple[list, tuple[int, int] | None, bool]:
