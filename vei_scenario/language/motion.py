@@ -46,6 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
+from vei_scenario.language.settings import negated
 from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
 from vei_scenario.language.word_mention import word_mention
 
@@ -2535,6 +2536,8 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
                 continue  # (a move of its own: "cut into my lane" is read already)
             if at is not None and at.slot == "behaviour" and at.words.split()[-1] in ("into", "onto"):
                 continue  # ("swerves into my lane": a lane change the reader places with where it starts)
+            if at is not None and negated(tokens, at.start):
+                continue  # ("the rider does not enter the vehicle's lane": it stays where it is)
             before = [x for x in kept if x.start < j]
             subject = _subject_before(before)
             if subject is None:

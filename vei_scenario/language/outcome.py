@@ -69,7 +69,8 @@ _IMPACT_SOUNDS = frozenset(("thump", "thud", "bang", "smack", "crunch", "bump"))
 #: A contact noun before one of these is a modifier of something else ("collision warning").
 _COMPOUND_HEADS = frozenset(
     ("warning", "avoidance", "barrier", "barriers", "mitigation", "system", "systems", "detection", "alert", "sensor",
-     "helmet", "zone", "risk", "test", "tests", "course", "imminent", "scene", "data", "report", "ref", "reference")
+     "helmet", "zone", "risk", "test", "tests", "course", "imminent", "scene", "data", "report", "ref", "reference",
+     "type", "types", "category", "categories", "sport", "sports")
 )  # fmt: skip
 #: Objects that make a contact verb something else ("hit the brakes", "hit the gas", "clipped the kerb").
 _NOT_ROAD_USERS = frozenset(
@@ -128,7 +129,9 @@ _EGO_HEADS = frozenset(("i", "we", "ego", "sv", "vut", "av", "im"))
 _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "vehicle under test", "our car",
                 "my car", "host vehicle")  # fmt: skip
 #: What the ego does when it has to act: evasion, and its manner.
-_EVADE = frozenset(("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "jam", "anchor"))
+_EVADE = frozenset(
+    ("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "wrench", "jam", "anchor")
+)
 _HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
                    "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
@@ -392,6 +395,8 @@ def _is_contact(words: list[str], i: int) -> bool:
         rest = words[i + 1 : i + 4]
         if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
             return True  # ("bounced off my bonnet", "rolled over the windscreen")
+    if w == "onto" and _driven_onto_a_part(words, i):
+        return True  # ("slid up onto the back of it", "ran onto the rear of car 2")
     if w == "on" and i > 0 and (_lemmas(prev) & {"land"} or words[i - 2 : i] in (["ended", "up"], ["ends", "up"])):
         rest = words[i + 1 : i + 4]
         if rest[:1] and rest[0] in _POSSESSIVES | {"the"} and set(rest[1:]) & _STRUCK_PARTS:
@@ -445,7 +450,7 @@ def _is_contact(words: list[str], i: int) -> bool:
         and ("head-on" in words[i + 1 : i + 6] or "head on" in " ".join(words[i + 1 : i + 7]))
     ):
         return True  # ("met the tractor head-on", "they met head on")
-    if _injury_adjective(words, i):
+    if _injury_adjective(words, i) or _knocked_about(words, i):
         return False  # ("grazed knees and a cut elbow": an injury's adjective before a bare body part)
     if lem & _CONTACT_VERBS and words == [w] and w.endswith("s"):
         return False  # ("Tags: #cyclist": a plural noun as a label, no subject and no object)
@@ -501,6 +506,23 @@ def _driven_against_a_part(words: list[str], i: int) -> bool:
     if not obj or obj[0] not in _POSSESSIVES | {"the", "a", "an"}:
         return False
     return (obj[0] in _POSSESSIVES or _of_a_road_user(obj)) and _vehicle_part(obj)
+
+
+def _driven_onto_a_part(words: list[str], i: int) -> bool:
+    """Whether "onto" at ``i`` carries a vehicle driven by a verb of motion (a particle "up" between)
+    onto a part of a road user named after "of" ("drove up onto the rear of car 2", "slid onto the
+    back of it"): a shunt, told as where it ended. Not a verb of getting on or loading ("climbed onto
+    the back of the truck"), of coming up behind ("came up onto the back of a tractor": caught up), a
+    place ("pulled onto the shoulder of the road", "onto the back of the queue"), nor a side without
+    its owner ("cut the corner onto our side": the road's)."""
+    k = i - 2 if words[i - 1 : i] == ["up"] else i - 1
+    if k < 0 or not _is_verb(words[k]) or _lemmas(words[k]) & (_RESTING | {"come"}):
+        return False
+    part = next((n for n in range(i + 1, min(i + 4, len(words))) if words[n] in _PARTS), None)
+    if part is None or words[part + 1 : part + 2] != ["of"]:
+        return False
+    owner = words[part + 2 : part + 5]
+    return bool(owner) and (owner[0] in _PERSON_OBJECTS | _EGO_HEADS or names_road_user(owner))
 
 
 def _of_a_road_user(obj: list[str]) -> bool:
@@ -597,6 +619,8 @@ def _verbal(words: list[str], i: int) -> bool:
         return False
     if prev in _NEGATORS:
         return True  # ("no hit": denied, as a noun or a verb alike)
+    if set(words[max(0, k) : i]) & HEDGES:
+        return True  # ("only almost hit!": a hedge of degree modifies a verb, never a noun)
     if _vehicle_part(["the", *words[i + 1 : i + 4]]) or _road_user_word(nxt):
         return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
     if nxt == "ego":
@@ -611,6 +635,11 @@ def into_road_user(words: list[str], j: int) -> bool:
     a verb the reader lacks + such "into" ("banged into my car", "ploughed into us") is a collision,
     not a move into a place."""
     return _into_road_user(words, j)
+
+
+#: The parts of a vehicle that no road or place has ("door", "bumper"; not "side", "back", "front"
+#: or "boot", which a road, a queue or a load has too): met, whoever's they are.
+_FITTED_PARTS = frozenset(("door", "bumper", "wing", "bonnet", "windscreen", "windshield", "tailgate", "fender"))
 
 
 def _into_road_user(words: list[str], j: int) -> bool:
@@ -632,6 +661,8 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return False  # ("into the right lane", "into our path")
     if _no_thing_met(chunk):
         return False  # ("into the crosswalk", "gone into the dark", "tucked into the sun visor")
+    if chunk[-1] in _FITTED_PARTS:
+        return True  # ("went into the rear passenger door": a part only a vehicle has, its owner unsaid)
     if set(chunk) & _PARTS:
         return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
     nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
@@ -776,6 +807,21 @@ def _injury_adjective(words: list[str], i: int) -> bool:
     return (part[0] in _BODY_PARTS or part[0][:-1] in _BODY_PARTS) and after not in (["first"], ["on"], ["into"])
 
 
+#: What says a state of a person before its predicate ("he's just scraped up", "was all banged up").
+_STATE_BEFORE = frozenset(("'s", "s", "is", "was", "were", "are", "got", "looked", "just", "all", "a", "bit",
+                           "badly", "pretty", "fine", "only"))  # fmt: skip
+
+
+def _knocked_about(words: list[str], i: int) -> bool:
+    """Whether a verb of contact at ``i`` in "-ed" with "up" ending its clause is a person's state
+    after a copula ("he's fine, just scraped up", "she was all banged up"): hurt, which says nothing
+    of what hurt them (a fall of their own), not a blow between road users."""
+    w = words[i]
+    if not (_lemmas(w) & _CONTACT_VERBS and w.endswith("ed") and words[i + 1 :] == ["up"]):
+        return False
+    return i > 0 and words[i - 1] in _STATE_BEFORE
+
+
 def _touched_with_a_part(words: list[str], i: int) -> bool:
     """A verb of touching at ``i`` with someone as its object and a part of a body or vehicle as its
     instrument ("caught it with my knee", "nicked me with its trailer"); not "caught up with him",
@@ -875,13 +921,14 @@ _AUXILIARIES = frozenset(("did", "does", "do", "has", "have", "had", "was", "wer
 def _never_occurred(after: list[str]) -> bool:
     """Whether the words ``after`` a contact noun deny that it happened: auxiliaries, a negator, then
     a verb of happening ("did not take place", "didn't happen", "has not occurred", "never
-    happened", "never came" at its clause's end); not "did not stop him", whose verb says what the
-    contact did."""
+    happened", "never came" at its clause's end, "was not going to happen"); not "did not stop him",
+    whose verb says what the contact did."""
     k = 0
     while k < len(after) and after[k] in _AUXILIARIES:
         k += 1
     if k >= len(after) or after[k] not in ("not", "never"):
         return False
+    k += 2 if after[k + 1 : k + 3] in (["going", "to"], ["about", "to"]) else 0  # ("was not going to happen")
     verb = after[k + 1 : k + 2]
     if verb and _lemmas(verb[0]) & {"come"}:
         return len(after) == k + 2  # ("the impact never came"; not "never came to court")
@@ -1266,6 +1313,37 @@ def _does_next(after: list[str]) -> bool:
     return len(after) > k + 1 and _is_verb(after[k + 1]) and after[k + 1] in _lemmas(after[k + 1])
 
 
+#: The auxiliaries of a denied finite verb ("does not enter", "did not cross").
+_DID = (["does"], ["did"], ["do"], ["will"], ["would"], ["could"], ["can"])
+
+
+def _failure_to(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` is what a noun of failing says was not done ("failure to give way",
+    "a refusal to yield"): the opposite of a road user giving way."""
+    return words[i - 1 : i] == ["to"] and words[i - 2 : i - 1] in (["failure"], ["refusal"])
+
+
+#: Verbs (lemmas) of moving out of one place into another's: denied, the mover stayed where it was.
+_ENTERING = frozenset(("enter", "leave", "cross"))
+
+
+def _kept_to_its_place(words: list[str], i: int) -> bool:
+    """Whether the finite verb at ``i`` (its subject a road user, not the ego) is denied by a negator
+    right before it, auxiliaries between, that it left its place or entered another ("the rider never
+    left the shoulder", "does not enter the vehicle's lane", "didn't cross the line"): it stayed out of
+    the ego's way, so nothing forced an escape. Not a participle under a negation of something else
+    ("did not slow for a rider crossing the road", "with no lamps rolled across from the left verge")."""
+    if words[i].endswith("ing") or not (_is_verb(words[i]) and _lemmas(words[i]) & _ENTERING):
+        return False
+    j = i - 1
+    while j >= 0 and words[j] in ("even", "ever", "once"):
+        j -= 1
+    if j < 0 or words[j] not in ("not", "never") or (words[j] == "not" and words[j - 1 : j] not in _DID):
+        return False
+    obj = words[i + 1 : i + 5]
+    return bool(set(obj) & (_PLACES | _ROAD_EDGES | _ENTERED))
+
+
 #: The edges of a road the ego is driven onto to escape ("had to mount the verge", "forced onto the grass").
 _ROAD_EDGES = frozenset(("verge", "gravel", "shoulder", "grass", "kerb", "curb", "pavement", "footpath", "sidewalk",
                          "ditch", "hedge", "reservation", "median", "dirt", "rumble"))  # fmt: skip
@@ -1393,6 +1471,25 @@ _HARM_NOUNS = frozenset(("damage", "injury", "injuries", "casualty", "casualties
 #: Words of being unhurt, said of a person ("the boy was fine"): no injury, which is not a safe pass.
 _UNHURT = frozenset(("fine", "ok", "okay", "alright", "unhurt", "unharmed", "unscathed", "uninjured"))
 _PASSIVE_AUX = frozenset(("was", "were", "got", "get", "gets", "is", "are", "been", "be", "being"))
+
+
+#: Nouns of a mark left on a vehicle by a blow (singular and plural).
+_DAMAGE = frozenset(("damage", "dent", "dents", "scratch", "scratches", "scrape", "scrapes"))
+#: Prepositions that name where such a mark is ("damage to my wing", "a dent in the door", "damage at both cars").
+_DAMAGE_PLACE = frozenset(("to", "in", "on", "at", "of"))
+#: Quantifiers that may open the vehicles damaged ("damage at both vehicles", "scratches on all the cars").
+_BOTH = frozenset(("both", "all", "each", "either"))
+
+
+def _damage_to_a_vehicle(words: list[str], i: int) -> bool:
+    """Whether the noun of damage at ``i`` is said of a vehicle or a part of one ("slight damage to my
+    nearside wing", "a dent in the passenger door", "sheet metal damage at both vehicles"): the mark
+    of a contact, which a report states instead of the blow. Not damage to a thing ("damage to the
+    kerb")."""
+    if words[i] not in _DAMAGE or words[i + 1 : i + 2] == [] or words[i + 1] not in _DAMAGE_PLACE:
+        return False
+    obj = [w for w in words[i + 2 : i + 7] if w not in _BOTH]
+    return _vehicle_part(obj) or names_road_user(obj[:4]) or bool(obj[:1] and obj[0] in _EGO_HEADS)
 
 
 def _person_subject(words: list[str], i: int) -> bool:
@@ -1715,8 +1812,10 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     "required" (a contact a test says must not happen); None where it says nothing of the road users
     (a warning of what may happen to anyone, hitting the kerb while escaping someone). ``sentence``:
     its sentence's words up to the end of its clause."""
-    if _escaping_into_furniture(words, i, sentence) or _predicted(words, i):
+    if _escaping_into_furniture(words, i, sentence) or _predicted(words, i) or _named_as_a_risk(words, i):
         return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
+    if _threatened(words, i):
+        return "hedged"  # ("the ego must brake or they will collide": what the alternative would bring)
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
     hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
@@ -1731,6 +1830,32 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         # ("must overtake him and not touch him": the outcome the test wants, no contact)
         return "required" if _required(before) else "denied"
     return "contact"
+
+
+#: Nouns of what may come: a contact noun as their "of" complement names a danger, not an event.
+_POSSIBILITY = frozenset(
+    ("risk", "risks", "danger", "dangers", "chance", "chances", "possibility", "threat", "likelihood", "probability")
+)
+
+
+def _named_as_a_risk(words: list[str], i: int) -> bool:
+    """Whether the contact noun at ``i`` is the complement of a noun of possibility ("a risk of head-on
+    collisions", "the danger of a crash"; an adjective or determiner between): what may happen in such
+    a place, which says nothing of what happened in this scene."""
+    k = next((k for k in range(i - 1, max(-1, i - 4), -1) if words[k] == "of"), None)
+    return k is not None and k > 0 and words[k - 1] in _POSSIBILITY
+
+
+#: Conjunctions of an alternative: what follows is what comes if the act before is not done.
+_ALTERNATIVE = frozenset(("or", "otherwise", "else"))
+
+
+def _threatened(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` is the consequence threatened by an alternative, a modal between
+    ("must brake or they will collide", "swerve, otherwise we'd hit him"): it follows only if the act
+    is not done, so it did not happen."""
+    k = next((k for k in range(i - 1, -1, -1) if words[k] in _ALTERNATIVE), None)
+    return k is not None and any(w in _MODALS | {"will", "may"} for w in words[k + 1 : i])
 
 
 #: The answers of a form's field that deny what its label names ("Contact: none", "Collision: N").
@@ -1908,6 +2033,9 @@ def outcome_cues(said: str) -> list[Cue]:
             if _is_verb(w) and _lemmas(w) & _ESCAPING and _need_denied(words, i):
                 add("unforced")  # ("didn't even have to brake", "no need to swerve": nothing forced)
                 continue
+            if doer == "other" and _kept_to_its_place(words, i):
+                add("unforced")  # ("the rider never left the shoulder": no one came into the ego's way)
+                continue
             if _seen_late(words, i, whole, at):
                 add("late")  # ("didn't see him until Dad shouted": a near miss unless a safe pass is said)
                 continue
@@ -1968,6 +2096,10 @@ def outcome_cues(said: str) -> list[Cue]:
             if w in _HARM_NOUNS and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
                 add("denied")  # ("no damage", "escaped serious injury": no harm said, not that all was well)
                 continue
+            if w in _HARM_NOUNS and _damage_to_a_vehicle(words, i) and not _denied_before(words, i):
+                hypothetical = _modal_perfect(words, i) or _scoped(words, i, _HYPOTHETICAL, 4)
+                add("hedged" if hypothetical else "contact")  # ("damage to my wing", "could have dented it")
+                continue
             if w in _UNHURT and _person_subject(words, i):
                 add("denied")  # ("the kid was fine": unhurt, however close it was)
                 continue
@@ -1986,8 +2118,11 @@ def outcome_cues(said: str) -> list[Cue]:
             ):
                 add("close")  # ("squeezed past", "squeezed through between us": a pass with no room)
                 continue
-            if words == ["just"] and ends_sentence and n > 0:
-                add("hedged")  # ("Made it. Just.": barely)
+            if len(words) == 1 and w in HEDGES | {"just"} and ends_sentence and n > 0:
+                add("hedged")  # ("Made it. Just.", "He got through. Barely.": a hedge of what was just told)
+                continue
+            if len(words) == 1 and w in _IMPACT_SOUNDS and clause.first_of_sentence and ends_sentence:
+                add("contact")  # ("CRUNCH.", "Thud.": the impact told by its sound, a sentence of its own)
                 continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe")  # ("All clear.")
@@ -2061,7 +2196,7 @@ def outcome_cues(said: str) -> list[Cue]:
             elif _is_verb(w) and _road_user_evades(words, i):
                 add("escape")  # (a named road user's hard brake or swerve: "the Prius swerved", "SUT braked hard")
             elif _lemmas(w) & {"let", "give", "yield"} and _is_verb(w) and not w.endswith("ing"):
-                if _ego_acts(words, i) == "yield" and not _denied_before(words, i):
+                if _ego_acts(words, i) == "yield" and not _denied_before(words, i) and not _failure_to(words, i):
                     add("yield")  # (someone gives way or lets the other go: no conflict)
             elif _is_verb(w) and _lets_another_go(words, i, whole[at + i + 1 :]):
                 add("yield")  # (anyone waits while another goes: "the bus waited behind me", "flashed us across")
