@@ -1,26 +1,18 @@
 """The outcome told indirectly or set aside (:mod:`vei_scenario.language.outcome`): an impact told by
-its sound alone, a body or vehicle driven onto the back of another, damage to a vehicle, a collision
-threatened as the consequence of an alternative ("brake or they will collide") or named as a risk,
-touching all but done ("mirrors almost touching"), a hedge said alone ("Made it. Barely."), and the
-wheel wrenched away. Wordings written for these tests, none taken from a corpus; the guard cases
-must keep their old reading."""
+its sound alone, a vehicle driven onto the back of another, damage to a vehicle, a collision
+threatened as the consequence of an alternative ("brake or they will collide"), named as a risk or
+said not to be coming, touching all but done ("only almost hit"), a hedge said alone ("Barely."), the
+wheel wrenched away, and a road user said to stay in its place. Wordings written for these tests,
+none taken from a corpus; the guards are near wordings that must not take the new readings (a plain
+wheel turn, "bang on 30", "onto the shoulder", the ego's hard brake beside a road user kept in lane,
+a rider hurt in a fall of their own)."""
 
 from __future__ import annotations
 
 import pytest
 
-from vei_scenario.language.outcome import stated_intent
-from vei_scenario.language.reader import _tokens
+from tests.test_language_outcome import _case, _intent
 from vei_scenario.language.rules_backend import layers_from_text
-
-
-def _intent(text: str) -> str | None:
-    return stated_intent(" ".join(_tokens(text)))
-
-
-def _case(group: dict[str, list[str]]):
-    return [(text, intent) for intent, texts in group.items() for text in texts]
-
 
 # an impact said by its sound as a sentence of its own; a car driven onto the back of another; damage
 # to a vehicle or a part of one: a collision
