@@ -483,19 +483,39 @@ def _the_junction_left(m, mentions: list) -> bool:
     return not (after and after[0].slot == "arm" and after[0].start <= m.end + 1)
 
 
+def _down_a_side_road(mentions: list, k: int) -> bool:
+    """Whether the plain move ``mentions[k]`` is said with a side road right after it ("came down a side
+    road on our left", "rode along the side street"): the way it comes, so where it ends says more."""
+    m = mentions[k]
+    nxt = mentions[k + 1] if k + 1 < len(mentions) else None
+    return m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES and nxt is not None and nxt.slot == "arm"
+
+
+#: The road a side road meets, named as such ("out onto the main road"): the ego's, where it drives.
+_THE_MAIN_ROAD = (("the", "main", "road"), ("the", "main", "street"), ("the", "major", "road"))
+
+
+def _the_main_road_at(tokens: list[str], j: int) -> bool:
+    """Whether the road a side road meets is named from ``tokens[j]`` ("the main road")."""
+    return any(tuple(tokens[j : j + len(road)]) == road for road in _THE_MAIN_ROAD)
+
+
 def _into_the_ego_road(mentions: list, tokens: list[str]) -> list:
     """``mentions`` with a pull-out from a side road said to end in the ego's lane or path ("came out
     of the side road without stopping and into my lane", "shot out of a side street, straight into
     our lane in front of us") read as turning into the ego's road: where it ends says it turns into
-    that road, not across it, even when it did not stop first."""
+    that road, not across it, even when it did not stop first. A plain move down a side road said to
+    end on the main road ("came down a side road on our left and out onto the main road") is that
+    pull-out too: the side road is the way it came, the main road where it ends."""
     out = list(mentions)
     for k, m in enumerate(out):
-        if m.slot != "behaviour" or not m.value[1].get("from_side_road"):
+        if m.slot != "behaviour" or not (m.value[1].get("from_side_road") or _down_a_side_road(out, k)):
             continue
         stop = next((x.start for x in out[k + 1 :] if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
         end = max(x.end for x in out) if stop is None else stop
         for i in range(m.end, min(end, len(tokens))):
-            into = tokens[i] in ("into", "onto") and _the_ego_way_at(tokens, i + 1)
+            ends_in = _the_ego_way_at(tokens, i + 1) or _the_main_road_at(tokens, i + 1)
+            into = tokens[i] in ("into", "onto") and ends_in
             if into or _before_the_ego(tokens, i):
                 out[k] = replace(m, value=("turn_into", m.value[1]))
                 break
@@ -2292,10 +2312,15 @@ def with_a_thing_out_into_the_road(clauses: list, tokens: list[str]) -> list:
 
 
 #: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
-_FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan"))
+_FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan", "pedestrian"))
 #: Prepositions that put a road user in the crossing itself, out on the road ("halfway over the zebra"; not
 #: "at" or "by" it).
 _IN_IT = frozenset(("in", "on", "onto", "into", "across", "over"))
+#: Prepositions of going that end on or past the crossing ("walked onto the zebra", "ran over the
+#: crosswalk"): with a plain move before them, the move is the going across ("on" says only where it is).
+_ONTO_IT = frozenset(("onto", "into", "across", "over"))
+#: Plain moves that a going onto a foot crossing makes a crossing: going on, with nothing said of how.
+_GOING_ONTO = frozenset(("keep_going", "along_road"))
 
 
 def _preposition_before(tokens: list[str], start: int) -> str:
@@ -2310,7 +2335,9 @@ def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a walker or rider said to be in or on a foot crossing ("hit a pedestrian in the
     crosswalk", "a man on the zebra crossing", "a kid on a bike on the pelican") and no move of its own
     read as crossing the road on it: out on a crossing made for going across, that is what it does.
-    Waiting at the crossing, or a move said of it ("walked along the crossing"), keeps what is said."""
+    A plain move whose way ends on or over the crossing ("walked onto the crosswalk", "ran over the
+    zebra") is that crossing: the place it goes to is made for going across. Waiting at the crossing,
+    or a move said of it ("walked along the crossing"), keeps what is said."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
@@ -2326,14 +2353,32 @@ def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
                 continue
             end = next((n for n in range(k + 1, len(mentions)) if mentions[n].slot in ("actor", "pronoun")), None)
             own = [x for x in mentions[at + 1 : end] if not (entering and x.words == before)]  # (not "enters")
-            if any(x.slot in ("behaviour", "stationary", "unknown_verb", "ego_verb", "turn") for x in own):
+            said = [x for x in own if x.slot in ("behaviour", "stationary", "unknown_verb", "ego_verb", "turn")]
+            manner = [x for x in said if x.slot == "ego_verb" and x.value == "straight"]  # ("walked straight onto")
+            going = _going_onto([x for x in said if x not in manner], m, before)
+            if said and going is None:
                 continue  # (it does something said: that stands)
             # said as its participle right after it ("a man crossing on the zebra"), so the crossing is
             # the walker's even where the walker is the object of the narrator's verb ("I hit a man ...")
             crossing = replace(m, slot="behaviour", value=("cross_in_front", {}), words="crossing", det="", owners=())
-            kept.insert(kept.index(mentions[at]) + 1, crossing)
+            if going is not None:
+                kept[kept.index(going)] = replace(going, value=("cross_in_front", {}))
+                kept = [x for x in kept if x not in manner]
+            else:
+                kept.insert(kept.index(mentions[at]) + 1, crossing)
         out.append((link, kept))
     return out
+
+
+def _going_onto(said: list, place, before: str):
+    """The one plain move among the road user's ``said`` acts that goes onto or over the foot crossing
+    ``place`` (``before``: the preposition before it), or None: "walked onto the zebra" goes across by
+    going there, but "waited on the crosswalk" or "stopped and then walked onto it" say more than that."""
+    if before not in _ONTO_IT or len(said) != 1:
+        return None
+    move = said[0]
+    plain = move.slot == "behaviour" and move.value[0] in _GOING_ONTO and move.end <= place.start
+    return move if plain else None
 
 
 #: Moves out of a place beside the road that a crossing said next goes on with: the way out of it.
