@@ -1531,10 +1531,25 @@ def _drop_label(clauses):
         if {m.start for m in mentions[:colon]} & {o for m in mentions[colon:] for o in m.owners}:
             out.append((link, mentions))  # ("cyclist: 12 m ahead, 15 km/h, brakes"): a key whose values follow
             continue
+        if _fronted_place(mentions[:colon]):
+            out.append((link, mentions))  # ("FROM THE RIGHT: a rider blows through the red"): where it comes from
+            continue
         dropped = ("actor", "behaviour", "relation", "side", "count", "unknown_verb") + _POSITIONAL
         head = [m for m in mentions[:colon] if m.slot not in dropped]
         out.append((link, head + mentions[colon + 1 :]))
     return out
+
+
+#: Prepositions a place that opens a clause is said with ("From the right: ...", "Out of the side road: ...").
+_FRONTING = frozenset({"from", "out", "off"})
+
+
+def _fronted_place(head: list) -> bool:
+    """Whether what stands before a colon is only a side said with a preposition of coming from ("FROM
+    THE RIGHT:", "from my left:"). Why: a label names the case with a noun phrase ("Cut-out:", "Target
+    cyclist:"); a prepositional phrase names none, it is fronted for the clause after the colon and says
+    where that clause's road user comes from, as "From the right, a rider ..." does."""
+    return bool(head) and all(m.slot == "side" and m.words.split()[0] in _FRONTING for m in head)
 
 
 def _gap_holder(actors: list[_Actor]) -> _Actor:

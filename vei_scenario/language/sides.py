@@ -521,6 +521,15 @@ def _of_the_egos_vehicle(tokens: list[str], j: int, end: int) -> bool:
     return after[:1] == ["of"] and bool(owner or after[1:3] == ["the", "ego"])
 
 
+def the_egos_kerb_side(tokens: list[str], j: int) -> bool:
+    """Whether the ego's possessive at token ``j`` owns a kerb side word ("the van's nearside", the
+    reader having named the writer's van the ego: "the ego 's nearside"). Why: a vehicle's nearside is
+    the kerb side of the road it faces along, so the ego's own nearside is the writer's near kerb, as
+    "my nearside" is; another vehicle's ("on the bus's offside") may face either way, and stays a part
+    of that vehicle."""
+    return tokens[j : j + 2] == ["ego", "'s"] and tokens[j + 2 : j + 3] != [] and tokens[j + 2] in _KERB_SIDES
+
+
 def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | None:
     """The side phrase starting at token ``i`` (at its preposition, determiner or first content word),
     or None. Two orders are read:
@@ -546,6 +555,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         j += 1
     if j >= n:
         return None
+    egos = the_egos_kerb_side(tokens, j)
+    j += 2 * egos  # ("on the van's nearside", the van being the ego's: read past whose it is)
     start = j
     if i != start and tokens[i] not in _OPENING and tokens[i] not in _DETERMINERS:
         return None
@@ -558,8 +569,10 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         said = phrase_at(tokens, i, left_hand, ring)
         return None if said is None else replace(said, end=said.end + shift * (said.end > j))
     if tokens[j] in _KERB_SIDES:
-        owned = tokens[j - 1] in _OWNERS and prep in _WHERE_BESIDE  # ("on my nearside": beside the ego)
-        part = tokens[j + 1 : j + 2] == ["of"] or (tokens[j - 1] in _OWNERS and not owned) or tokens[j - 1] == "'s"
+        # ("on my nearside", "on the taxi's offside" of the ego's taxi: beside the ego)
+        owned = (tokens[j - 1] in _OWNERS or egos) and prep in _WHERE_BESIDE
+        of_one = tokens[j - 1] in _OWNERS or tokens[j - 1] == "'s"
+        part = tokens[j + 1 : j + 2] == ["of"] or (of_one and not owned)
         if part:  # "the offside of the HGV", "into our nearside": a side of a vehicle, no road user's place
             return Said(start, j + 1, prep, ())
         if (end := part_after_side(tokens, j + 1)) is not None:  # ("the offside front corner")
