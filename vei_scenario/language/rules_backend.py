@@ -424,7 +424,7 @@ def _room_ahead_before_feature(ego: dict, adversaries: list[dict], kind: str) ->
         meet = lon
         if spawn.get("facing", "with") == "with" and spawn["relation"] != "oncoming" and speed < ego_speed - 1.0:
             meet = lon * ego_speed / (ego_speed - speed)  # (the ego catches up with it there)
-        if spawn["relation"].startswith("roadside") and _first_node(adv)["behaviour"] == "turn_into":
+        if _turns_in_from_roadside(adv):
             meet = lon + ROADSIDE_TURN_ROOM_M  # (it turns out along the road: in the ego's lane before the junction)
         need = max(need, lon, meet + MEETING_CLEAR_OF_FEATURE_M if meet > lon else lon)
     if need > float(ego["distance_m"]) - 1.0:
@@ -511,13 +511,25 @@ def _before_bend_m(lanes: int) -> float:
     return (layout({"kind": "curve", "lanes_per_direction": lanes}).feature_s_m or 0.0) - 2 * MEETING_CLEAR_OF_FEATURE_M
 
 
+def _turns_in_from_roadside(adv: dict) -> bool:
+    """Whether road user ``adv`` comes into the ego's lane from beside the road along a turn: one turning
+    out of a place there (a drive, a gate), or one parked beyond the far kerb that pulls out across the
+    oncoming lanes (:func:`~vei_scenario.language.behaviours.cut_in.pulls_out_across`)."""
+    from vei_scenario.language.behaviours import cut_in
+
+    relation, first = adv["spawn"]["relation"], _first_node(adv)["behaviour"]
+    if first == "cut_in":
+        return cut_in.pulls_out_across(adv["type"], relation, float(adv.get("speed_mps", 0.0)))
+    return relation.startswith("roadside") and first == "turn_into"
+
+
 def _turn_in_before_bend(ego: dict, adversaries: list[dict], kind: str, lanes: int) -> None:
     """On a curve map the ego starts far enough before the bend for a road user turning into its lane
     from beside the road to be in it before the bend (:func:`_before_bend_m`); where it is, nothing changes."""
     if kind != "curve" or "distance_m" not in ego:
         return
     for adv in adversaries:
-        if adv["spawn"]["relation"].startswith("roadside") and _first_node(adv)["behaviour"] == "turn_into":
+        if _turns_in_from_roadside(adv):
             need = float(adv["spawn"]["longitudinal_m"]) + ROADSIDE_TURN_ROOM_M + MEETING_CLEAR_OF_FEATURE_M
             if need > float(ego["distance_m"]):
                 ego["distance_m"] = round(min(need, _before_bend_m(lanes) + MEETING_CLEAR_OF_FEATURE_M), 3)
@@ -716,6 +728,14 @@ def _place_adversary(
             return spawn, round(speed, 3)
         spawn["longitudinal_m"] = round(STOP_LINE_M + length / 2, 3)
         return spawn, 0.0
+    if behaviour_name == "cut_in" and mod.pulls_out_across(kind, relation, _roadside_speed(kind, speed)):
+        # parked beyond the far kerb: it stands there until the ego has closed in for lead_s and is as far
+        # as its way across the oncoming lanes into the ego's lane takes
+        lateral = _roadside_to_ego_lane_m(relation, lanes, int(ego["lane"]))
+        trigger = mod.across_distance_m(ego_speed, lateral, cfg, _vehicle(kind))
+        lead = ego_speed * float(cfg.get("lead_s", 2.5))
+        spawn["longitudinal_m"] = round(_turn_in_spawn_m(trigger, lengths, lead, ego, lanes), 3)
+        return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind) and behaviour_name == "cut_in":
         # pulls out of a place beside the road (a stop, a driveway, a lay-by): it stands there until the
         # ego has closed in for lead_s, as a parked car that pulls out does
@@ -729,10 +749,7 @@ def _place_adversary(
         if distance_m is not None:
             _turn_in_from_roadside_at(distance_m, ego_speed, lateral, cfg, _vehicle(kind))
         trigger = mod.roadside_trigger_m(ego_speed, lateral, cfg, _vehicle(kind))
-        lon = lengths / 2 + trigger + ego_speed * ROADSIDE_LEAD_S
-        if ego.get("placement") == "on_curve":  # (in on the road before the bend, as far as it has room)
-            lon = max(lengths / 2 + trigger, min(lon, _before_bend_m(lanes) - ROADSIDE_TURN_ROOM_M))
-        spawn["longitudinal_m"] = round(lon, 3)
+        spawn["longitudinal_m"] = round(_turn_in_spawn_m(trigger, lengths, ego_speed * ROADSIDE_LEAD_S, ego, lanes), 3)
         return spawn, 0.0
     if relation.startswith("roadside") and not vulnerable(kind):
         # parked beyond the kerb (placed by the road user it hides, if any: _place_occluders)
@@ -800,6 +817,24 @@ def _place_adversary(
     elif distance_m is not None:
         spawn["longitudinal_m"] = distance_m if relation != "behind" else -distance_m
     return spawn, round(out_speed, 3)
+
+
+def _roadside_speed(kind: str, speed: float | None) -> float:
+    """The speed (m/s) a road user beside the road starts at: a vehicle there stands (parked, at a stop),
+    a rider rides along the kerb unless its stated speed says it stands."""
+    if not vulnerable(kind):
+        return 0.0
+    return _pace(kind, speed)
+
+
+def _turn_in_spawn_m(trigger_m: float, lengths_m: float, closing_m: float, ego: dict, lanes: int) -> float:
+    """How far ahead of the ego (m) a road user stands beside the road that turns into the ego's lane
+    when the ego is ``trigger_m`` away: ``closing_m`` farther, for the ego to close in first (on a curve
+    map as far as the road before the bend has room, that it is in the lane before the bend)."""
+    lon = lengths_m / 2 + trigger_m + closing_m
+    if ego.get("placement") == "on_curve":  # (in on the road before the bend, as far as it has room)
+        lon = max(lengths_m / 2 + trigger_m, min(lon, _before_bend_m(lanes) - ROADSIDE_TURN_ROOM_M))
+    return lon
 
 
 def _pace(kind: str, speed: float | None) -> float:

@@ -30,7 +30,7 @@ from pathlib import Path
 from scenariogeneration import xosc
 
 from vei_scenario.language import maps, placement
-from vei_scenario.language.behaviours import behaviour
+from vei_scenario.language.behaviours import behaviour, cut_in
 from vei_scenario.language.behaviours.base import ActorContext, Condition, G, value
 from vei_scenario.language.description_text import plain_text
 from vei_scenario.language.layers import behaviour_nodes
@@ -356,7 +356,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         )
         controller = None
         does = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]
-        at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind)
+        # (parked beyond the far kerb, a cut-in comes across the oncoming lanes as a turn in does)
+        ctx.pulls_out_across = does[0] == "cut_in" and cut_in.pulls_out_across(kind, adv["spawn"]["relation"], speed)
+        at_kerb = adv["spawn"]["relation"].startswith("roadside") and vulnerable(kind) and not ctx.pulls_out_across
         # (one whose first move is a swerve swerves from the kerb lane's edge, and crosses from that lane
         # after it, if it does; one that crosses first crosses from the kerb)
         swerves = does[0] in SWERVES_FROM_KERB or (set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does)
@@ -386,9 +388,10 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
                     _properties({"riderType": "normal", "route": f"{name}_crossing", "egoEntity": EGO, "v0_mps": 4.5}),
                 )
             position = xosc.WorldPosition(round(path[0][0], 3), round(path[0][1], 3), 0, round(heading, 5))
-        elif does[0] == "turn_into" and adv["spawn"]["relation"].startswith("roadside"):
+        elif (does[0] == "turn_into" and adv["spawn"]["relation"].startswith("roadside")) or ctx.pulls_out_across:
             net = net or _road_network(xodr_bytes)
-            ctx.crossing_path, ctx.crossing_distance_m = _turn_in_path(net, pose, ego_pose.lane_id)
+            start = cut_in.NOSED_OUT_RAD if ctx.pulls_out_across else math.pi / 2
+            ctx.crossing_path, ctx.crossing_distance_m = _turn_in_path(net, pose, ego_pose.lane_id, start)
             x, y, heading = ctx.crossing_path[0]
             position = xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(heading, 5))
         else:
@@ -440,18 +443,21 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
     return WrittenScenario(render(scenario), xodr_bytes, [a["name"] for a in layers["adversaries"]])
 
 
-def _turn_in_path(net: RoadNetwork, pose: placement.Pose, ego_lane_id: int) -> tuple[list, float]:
+def _turn_in_path(
+    net: RoadNetwork, pose: placement.Pose, ego_lane_id: int, start_rad: float = math.pi / 2
+) -> tuple[list, float]:
     """(world points with headings of the way a road user standing beside the ego's road at ``pose``
     turns into the ego's lane, its distance across to that lane's centre (m)): the path of
-    :func:`~vei_scenario.language.behaviours.turn_into.roadside_path_st`, from facing across the road
-    to facing the ego's way. Why a path: it comes onto the road across the kerb line, where no lane
-    change can start, and from the far side it must turn to face the ego's way, not drive its lane's."""
+    :func:`~vei_scenario.language.behaviours.turn_into.roadside_path_st`, from facing ``start_rad`` off
+    the road's direction (square across it by default) to facing the ego's way. Why a path: it comes
+    onto the road across the kerb line, where no lane change can start, and from the far side it must
+    turn to face the ego's way, not drive its lane's."""
     from vei_scenario.language.behaviours.turn_into import roadside_path_st
 
     road = net.road(pose.road)
     t0 = road.lane_center_t(pose.s, pose.lane_id) + pose.offset
     t_lane = road.lane_center_t(pose.s, ego_lane_id)
-    points = [road.world(s, t)[:2] for s, t in roadside_path_st(pose.s, t0, t_lane)]
+    points = [road.world(s, t)[:2] for s, t in roadside_path_st(pose.s, t0, t_lane, start_rad)]
     headings = [math.atan2(q[1] - p[1], q[0] - p[0]) for p, q in zip(points, points[1:])]
     return [(x, y, h) for (x, y), h in zip(points, headings + headings[-1:])], abs(t_lane - t0)
 

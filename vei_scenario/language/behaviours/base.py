@@ -83,6 +83,9 @@ class ActorContext:
     #: distance to the conflict (m).
     crossing_path: list[tuple[float, float, float]] | None = None
     crossing_distance_m: float | None = None
+    #: It stands beyond the far kerb and pulls out across the oncoming lanes along ``crossing_path``
+    #: (a cut-in from a parking place there), not by a lane change.
+    pulls_out_across: bool = False
     trajectories: dict[str, xosc.Trajectory] = field(default_factory=dict)
     #: The actor's Performance maxAcceleration: a speed it is told to reach takes at least v / a.
     actor_max_accel_mps2: float = 0.0

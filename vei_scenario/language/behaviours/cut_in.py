@@ -4,10 +4,18 @@ The actor drives in the lane beside the ego, ahead of it and slower (the ego clo
 free-space gap between them falls to ``gap_m`` it changes into the ego's lane over
 ``lane_change_s`` (sinusoidal) and at the same time slows by ``brake_delta_mps`` at
 ``brake_rate_mps2``. Gap, lane-change time and braking are what the criticality words set.
+
+One parked beyond the far kerb (``roadside_left``: across the oncoming lanes of this right-hand-traffic
+road) has no lane change into the ego's lane: it pulls out nosed out as a parked car is, across the
+oncoming lanes along the turn of :func:`~vei_scenario.language.behaviours.turn_into.roadside_path_st`,
+and is in the ego's lane ``gap_m`` ahead of the ego when it has turned into it.
 """
 
 from __future__ import annotations
 
+import math
+
+from vei_scenario.language.behaviours import turn_into
 from vei_scenario.language.behaviours.base import (
     ActorContext,
     Condition,
@@ -73,6 +81,8 @@ LATE_S = 2.0
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
+    if ctx.pulls_out_across:
+        return across_from_the_far_kerb(ctx, cfg)
     gap = value(cfg, PARAMETERS, "gap_m")
     duration = value(cfg, PARAMETERS, "lane_change_s")
     if ctx.actor_speed_mps < STANDING_MPS:  # pulling out: off when the ego is a lane change away from the gap
@@ -107,3 +117,51 @@ def place(ego_speed: float, lengths_m: float, cfg: dict) -> tuple[float, float]:
     closing = value(cfg, PARAMETERS, "closing_mps")
     lead = float(cfg.get("lead_s", 2.5))
     return lengths_m / 2 + value(cfg, PARAMETERS, "gap_m") + closing * lead, initial_speed(ego_speed, cfg)
+
+
+#: How far off the road's direction a car parked at the far kerb is turned when it moves off (rad):
+#: nosed out of its space towards the road, as one pulling out is, not square to the kerb.
+NOSED_OUT_RAD = math.pi / 4
+
+
+def pulls_out_across(kind: str, relation: str, speed_mps: float) -> bool:
+    """Whether a cut-in by a road user of ``kind`` from spawn ``relation`` at ``speed_mps`` pulls out
+    from beyond the far kerb: a vehicle or rider standing at the roadside across the oncoming lanes
+    (``roadside_left`` on this right-hand-traffic road; a walker there steps out, a crossing). Why
+    apart: from there the ego's lane is no lane change away; it comes across the oncoming lanes first,
+    turning into the ego's way as one out of a place beside the road does."""
+    return kind != "pedestrian" and relation == "roadside_left" and speed_mps < STANDING_MPS
+
+
+def across_turn_cfg(ego_speed: float, cfg: dict, accel_mps2: float) -> dict:
+    """The turn-in configuration (:mod:`~vei_scenario.language.behaviours.turn_into`) of a pull-out
+    from the far kerb: it speeds up at ``accel_mps2`` to its cut-in speed (:func:`initial_speed`)."""
+    return {"speed_mps": initial_speed(ego_speed, cfg), "accel_mps2": accel_mps2}
+
+
+def across_distance_m(ego_speed: float, lateral_m: float, cfg: dict, vehicle: tuple[float, float, float]) -> float:
+    """Free-space distance of the ego at which one parked ``lateral_m`` from the centre of the ego's lane
+    beyond the far kerb pulls out (``vehicle``: its length, top speed and acceleration): when it has
+    turned into the ego's lane the ego is ``gap_m`` behind it (its time to get there by
+    :func:`~vei_scenario.language.behaviours.turn_into.time_to_join_s`, less how far along the road it
+    has gone meanwhile). Why one helper: the writer's trigger and the sampler's spawn must agree."""
+    turn_m, along_m = turn_into.roadside_turn_m(lateral_m, NOSED_OUT_RAD)
+    t_actor = turn_into.time_to_join_s(turn_m, across_turn_cfg(ego_speed, cfg, vehicle[2] or 3.0), *vehicle)
+    return max(1.0, value(cfg, PARAMETERS, "gap_m") + ego_speed * t_actor - along_m)
+
+
+def across_from_the_far_kerb(ctx: ActorContext, cfg: dict) -> list[Step]:
+    """Pull out from the far kerb along the writer's turn-in path (``ctx.crossing_path``) at no more
+    than :data:`~vei_scenario.language.behaviours.turn_into.JOIN_SPEED_CAP_MPS` until it is in the
+    ego's lane, then speed up to its cut-in speed; set off when the ego is :func:`across_distance_m`
+    away (in front of a standing ego: at once)."""
+    turn = turn_into.JOIN_SPEED_CAP_MPS
+    v, a = ctx.reachable(initial_speed(ctx.ego_speed_mps, cfg), ctx.actor_max_accel_mps2 or 3.0)
+    steps = [Step(NAME, turn_into.turn_out_actions(ctx, min(v, turn), a))]
+    if ctx.ego_speed_mps >= turn_into.EGO_AT_REST_MPS:
+        vehicle = (ctx.actor_length_m, ctx.actor_max_speed_mps, a)
+        trigger = across_distance_m(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, cfg, vehicle)
+        steps[0].conditions.append(Condition("ego_within", round(trigger, 2)))
+    if v > turn:  # (in the lane it speeds up to its cut-in speed)
+        steps.append(Step(NAME, [speed_action(v, rate=a)]))
+    return steps

@@ -146,26 +146,36 @@ SETTLE_M = 4.0
 _TURN_POINTS = 12
 
 
-def roadside_path_st(s0: float, t0: float, t_lane: float) -> list[tuple[float, float]]:
+def roadside_path_st(s0: float, t0: float, t_lane: float, start_rad: float = math.pi / 2) -> list[tuple[float, float]]:
     """The path (s, t on the ego's road) of a road user turning out of a place beside the road at
     (``s0``, ``t0``) into the lane whose centre is at ``t_lane``, in the road's direction of increasing
-    s (the ego's): a quarter ellipse from facing across the road to facing along it, then a short
-    straight in the lane. Why an ellipse: it leaves the roadside square to the kerb, as one out of a
-    drive does, and meets the lane tangent to it, so that the lane takes it over without a kink."""
-    b = t_lane - t0
-    a = max(abs(b), TURN_OUT_MIN_M)
+    s (the ego's): part of a quarter ellipse, from ``start_rad`` off the road's direction (square to
+    the kerb by default) to facing along it, then a short straight in the lane. Why an ellipse: it
+    leaves the roadside square to the kerb, as one out of a drive does (or at the angle of one nosed
+    out of a parking space, the rest of the same turn), and meets the lane tangent to it, so that the
+    lane takes it over without a kink."""
+    a, b, skipped = _turn_axes(t_lane - t0, start_rad)
     turn = [
-        (s0 + a * (1.0 - math.cos(f)), t0 + b * math.sin(f))
-        for f in (math.pi / 2 * k / _TURN_POINTS for k in range(_TURN_POINTS + 1))
+        (s0 + a * (math.cos(skipped) - math.cos(f)), t0 + b * (math.sin(f) - math.sin(skipped)))
+        for f in (skipped + (math.pi / 2 - skipped) * k / _TURN_POINTS for k in range(_TURN_POINTS + 1))
     ]
-    return turn + [(s0 + a + SETTLE_M, t_lane)]
+    return turn + [(s0 + a * math.cos(skipped) + SETTLE_M, t_lane)]
 
 
-def roadside_turn_m(lateral_m: float) -> tuple[float, float]:
-    """(the length of the turn of :func:`roadside_path_st` over ``lateral_m``, how far along the road it
-    goes meanwhile) (m)."""
-    pts = roadside_path_st(0.0, 0.0, lateral_m)[:-1]
-    return sum(math.dist(p, q) for p, q in zip(pts, pts[1:])), max(lateral_m, TURN_OUT_MIN_M)
+def _turn_axes(lateral_m: float, start_rad: float) -> tuple[float, float, float]:
+    """(the along and across semi-axes of the ellipse of :func:`roadside_path_st` over ``lateral_m``,
+    the part of its quarter (rad) already turned at ``start_rad`` off the road's direction)."""
+    skipped = math.pi / 2 - min(max(start_rad, 0.1), math.pi / 2)
+    b = lateral_m / (1.0 - math.sin(skipped))
+    return max(abs(b), TURN_OUT_MIN_M), b, skipped
+
+
+def roadside_turn_m(lateral_m: float, start_rad: float = math.pi / 2) -> tuple[float, float]:
+    """(the length of the turn of :func:`roadside_path_st` over ``lateral_m`` from ``start_rad`` off
+    the road's direction, how far along the road it goes meanwhile) (m)."""
+    pts = roadside_path_st(0.0, 0.0, lateral_m, start_rad)[:-1]
+    a, _, skipped = _turn_axes(lateral_m, start_rad)
+    return sum(math.dist(p, q) for p, q in zip(pts, pts[1:])), a * math.cos(skipped)
 
 
 def roadside_trigger_m(
@@ -189,17 +199,26 @@ def from_the_roadside(ctx: ActorContext, cfg: dict) -> list[Step]:
     """Turn out of a place beside the road along the writer's path (``ctx.crossing_path``, world
     points of :func:`roadside_path_st`) into the ego's lane, speeding up to ``speed_mps``; set off
     when the ego is :func:`roadside_trigger_m` away (in front of a standing ego: at once)."""
-    traj = xosc.Trajectory(f"{ctx.actor}_turn_in", False)
-    points = [xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(h, 5)) for x, y, h in ctx.crossing_path or []]
-    traj.add_shape(xosc.Polyline([], points))
-    ctx.trajectories[traj.name] = traj
     v, a = ctx.reachable(value(cfg, PARAMETERS, "speed_mps"), value(cfg, PARAMETERS, "accel_mps2"))
-    actions = [xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position), speed_action(v, rate=a)]
-    if ctx.exits.get("straight"):  # (in the ego's lane it goes on straight over the junction ahead)
-        in_lane = replace(ctx, actor_lane_id=ctx.ego_lane_id, actor_s_m=ctx.ego_s_m)
-        actions.append(route_action(in_lane, "straight", exit_lane=abs(ctx.ego_lane_id)))
+    actions = turn_out_actions(ctx, v, a)
     if ctx.ego_speed_mps < EGO_AT_REST_MPS:
         return [Step(NAME, actions)]
     vehicle = (ctx.actor_length_m, ctx.actor_max_speed_mps, ctx.actor_max_accel_mps2)
     trigger = roadside_trigger_m(ctx.ego_speed_mps, ctx.crossing_distance_m or 0.0, cfg, vehicle)
     return [Step(NAME, actions, conditions=[Condition("ego_within", round(trigger, 2))])]
+
+
+def turn_out_actions(ctx: ActorContext, speed_mps: float, accel_mps2: float) -> list:
+    """The actions of a road user turning out of a place beside the road into the ego's lane: along
+    the writer's path (``ctx.crossing_path``), speeding up to ``speed_mps`` at ``accel_mps2``, and on a
+    map with a junction ahead its route straight over it in the ego's lane. Why one helper: whatever
+    brings it out of there (a turn in, a pull out from the far kerb), the way into the lane is one."""
+    traj = xosc.Trajectory(f"{ctx.actor}_turn_in", False)
+    points = [xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(h, 5)) for x, y, h in ctx.crossing_path or []]
+    traj.add_shape(xosc.Polyline([], points))
+    ctx.trajectories[traj.name] = traj
+    actions = [xosc.FollowTrajectoryAction(traj, xosc.FollowingMode.position), speed_action(speed_mps, rate=accel_mps2)]
+    if ctx.exits.get("straight"):  # (in the ego's lane it goes on straight over the junction ahead)
+        in_lane = replace(ctx, actor_lane_id=ctx.ego_lane_id, actor_s_m=ctx.ego_s_m)
+        actions.append(route_action(in_lane, "straight", exit_lane=abs(ctx.ego_lane_id)))
+    return actions
