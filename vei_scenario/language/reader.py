@@ -57,6 +57,7 @@ from vei_scenario.language import (
     narrator_vehicle,
     no_lane_beside,
     off_a_place,
+    passed_itself,
     protagonist,
     report_vehicle,
     run_on,
@@ -1961,6 +1962,9 @@ def _read(text: str) -> Reading:
                     if after_verb or m.prev in L.OBJECT_PREPOSITIONS:
                         if after_verb and subject == "ego" and actors and motion.passes(prev):
                             (bound.get(m.words) or actors[-1]).passed = True  # ("ego passes him")
+                        named_again = bound.get(m.words) or (actors[-1] if actors else None)
+                        if after_verb and passed_itself.passed_by_its_own_verb(named_again, prev, added):
+                            named_again.passed = True  # ("a cyclist ahead ... our rider overtakes it")
                         prev = m
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
@@ -2148,6 +2152,8 @@ def _read(text: str) -> Reading:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
                     who.passed = True  # ("the ego overtakes a cyclist")
+                if role == "verb" and after_verb and passed_itself.passed_by_its_own_verb(who, prev, added):
+                    who.passed = True  # ("e-scooters on the road ... pool car passed e-scooter")
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
@@ -2920,7 +2926,10 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
     the text follows put on the ego ("Hung a left onto Broadway and an e-scooter rider came at me",
     "Turned right at the lights but a van ..."): the clause before "and" had its own subject, left out,
     which cannot be the road user the clause after it opens with; before anyone is named it is the
-    narrator. A participle ("Turning left, a cyclist ...") may be the road user's and stays pending."""
+    narrator. So is a participle of turning ("Turning left at the lights and a cyclist came up my
+    inside"): a participle that opens a sentence says what its subject does, and the conjunction
+    puts that subject before it; said with only a comma ("Turning left, a cyclist ...") it may be the
+    road user's and stays pending."""
     if prev is None or prev.slot != "conj" or prev.value not in _JOINING:
         return pending
     mine = [
@@ -2928,7 +2937,7 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
         for p in pending
         if p.slot in ("turn", "behaviour", "ego_verb")
         and p.end <= prev.start
-        and not p.words.split()[0].endswith("ing")
+        and (not p.words.split()[0].endswith("ing") or p.slot == "turn")
     ]
     for p in mine:
         _apply(p, "ego", r, link, added)
