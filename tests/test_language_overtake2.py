@@ -1,8 +1,9 @@
 """Who passes whom: the object of a verb of passing is the one passed, never the one that passes.
 
-A walker or rider going along the road that the ego passes, where the ego is told by a role or a
-vehicle the reader holds as no road user ("our rider overtakes it", "the learner overtook him",
-"fleet van passed e-scooter"): the walker or rider goes along ahead, it overtakes no one. Wordings
+A walker or rider going along the road that the ego passes, where the ego is told by a role the
+reader holds as no road user ("our rider overtakes it", "the learner overtook him"): the walker or
+rider goes along ahead, it overtakes no one. A turn said as an opening participle before "and" is
+the narrator's, and a road user named after "when" is no vehicle the narrator drives. Wordings
 written for the class in several registers (a test spec, a log line, a diary, a driving lesson
 note); near misses where a road user does pass someone (the ego, another road user) keep their
 overtake.
@@ -26,7 +27,6 @@ from vei_scenario.language.rules_backend import layers_from_text
         "A kid on a bike was wobbling along the gutter, and the learner overtook him wide.",
         "Lesson notes: an old man was walking along the edge of the lane ahead, and my pupil went round him nicely.",
         "Log: e-scooters on the high street. 14:10, fleet van passed e-scooter at the kerb with 2 m to spare.",
-        "Topic 2 - e-scooters on carriageway. Note: works car overtook e-scooter near the left kerb at about 15 km/h.",
         "An e-scooter rider was going along the bus lane at 20 km/h, and our driver overtook it with plenty of room.",
     ],
 )
@@ -43,7 +43,7 @@ def test_the_one_passed_starts_ahead_in_the_layers() -> None:
 
 
 @pytest.mark.parametrize(
-    ("text", "moves"),
+    ("text", "said"),
     [
         ("A van came up behind me and overtook me.", [["overtake"]]),
         ("I was driving home when a cyclist overtook me on the inside.", [["overtake"]]),
@@ -52,8 +52,8 @@ def test_the_one_passed_starts_ahead_in_the_layers() -> None:
         ("I was driving along when a car overtook me.", [["overtake"]]),
     ],
 )
-def test_a_road_user_that_passes_someone_keeps_its_overtake(text: str, moves: list[list[str]]) -> None:
-    assert moves(text) == moves
+def test_a_road_user_that_passes_someone_keeps_its_overtake(text: str, said: list[list[str]]) -> None:
+    assert moves(text) == said
 
 
 def test_a_subject_read_as_a_road_user_keeps_its_pass() -> None:

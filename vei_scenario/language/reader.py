@@ -57,7 +57,6 @@ from vei_scenario.language import (
     narrator_vehicle,
     no_lane_beside,
     off_a_place,
-    passed_itself,
     protagonist,
     report_vehicle,
     run_on,
@@ -1962,9 +1961,6 @@ def _read(text: str) -> Reading:
                     if after_verb or m.prev in L.OBJECT_PREPOSITIONS:
                         if after_verb and subject == "ego" and actors and motion.passes(prev):
                             (bound.get(m.words) or actors[-1]).passed = True  # ("ego passes him")
-                        named_again = bound.get(m.words) or (actors[-1] if actors else None)
-                        if after_verb and passed_itself.passed_by_its_own_verb(named_again, prev, added):
-                            named_again.passed = True  # ("a cyclist ahead ... our rider overtakes it")
                         prev = m
                         continue  # "overtakes it": an object already known
                     who = subject if subject is not None else "ego"
@@ -2152,8 +2148,6 @@ def _read(text: str) -> Reading:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
                     who.passed = True  # ("the ego overtakes a cyclist")
-                if role == "verb" and after_verb and passed_itself.passed_by_its_own_verb(who, prev, added):
-                    who.passed = True  # ("e-scooters on the road ... pool car passed e-scooter")
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
                 named.append((who, role))
