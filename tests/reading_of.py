@@ -15,3 +15,8 @@ def ego_kph(text: str) -> float | None:
     """The ego's speed read from ``text`` in km/h to one decimal, or None where none is said."""
     mps = read(text).ego_speed_mps
     return None if mps is None else round(mps * 3.6, 1)
+
+
+def moves(text: str) -> list[list[str]]:
+    """The behaviours of each road user read from ``text``, by name, in the order the reader lists them."""
+    return [[b[0] for b in a.behaviours] for a in read(text).actors]

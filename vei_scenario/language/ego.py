@@ -1227,6 +1227,8 @@ def _ego_drives(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         kinds = RIDDEN if narrator_subject(tokens, k) else VEHICLES  # (a walker or rider is no one's vehicle)
         if p is None or p.kind not in kinds:
             continue
+        if SUBORDINATORS & set(tokens[k + 1 : p.start]):
+            continue  # ("I was driving when a cyclist overtook me": a clause of its own, no vehicle driven)
         if any(not (x in OWNING or _owner_word(tokens, j) or (x.isalpha() and not known(tokens, j))) for j, x in
                enumerate(tokens[k + 1 : p.start], k + 1)):  # fmt: skip
             continue

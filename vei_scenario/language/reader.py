@@ -2935,7 +2935,10 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
     the text follows put on the ego ("Hung a left onto Broadway and an e-scooter rider came at me",
     "Turned right at the lights but a van ..."): the clause before "and" had its own subject, left out,
     which cannot be the road user the clause after it opens with; before anyone is named it is the
-    narrator. A participle ("Turning left, a cyclist ...") may be the road user's and stays pending."""
+    narrator. So is a participle of turning ("Turning left at the lights and a cyclist came up my
+    inside"): a participle that opens a sentence says what its subject does, and the conjunction
+    puts that subject before it; said with only a comma ("Turning left, a cyclist ...") it may be the
+    road user's and stays pending."""
     if prev is None or prev.slot != "conj" or prev.value not in _JOINING:
         return pending
     mine = [
@@ -2943,7 +2946,7 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
         for p in pending
         if p.slot in ("turn", "behaviour", "ego_verb")
         and p.end <= prev.start
-        and not p.words.split()[0].endswith("ing")
+        and (not p.words.split()[0].endswith("ing") or p.slot == "turn")
     ]
     for p in mine:
         _apply(p, "ego", r, link, added)

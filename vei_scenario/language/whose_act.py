@@ -149,6 +149,7 @@ def acts_not_the_subjects(clauses: list, tokens: list[str], first_person: bool, 
     out.update(named_persons_acts(clauses, tokens, text))
     out.update(caused_acts(clauses, tokens))
     out.update(unread_subjects_reactions(clauses, tokens))
+    out.update(unread_subjects_passes(clauses, tokens))
     out.update(agentless_reactions(clauses, tokens))
     return out
 
@@ -630,6 +631,36 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
         if any(k in read for k in range(p + 1, noun.start)) or not ("NOUN" in lemmas(head) or head.endswith("ing")):
             continue  # (its noun is a vehicle, whose verb follows: "the neighbour's van pulled out")
         out[noun.start] = False
+    return out
+
+
+def unread_subjects_passes(clauses: list, tokens: list[str]) -> dict[int, bool]:
+    """The verbs of passing whose subject is a common noun the reader reads as no road user, opening
+    its clause ("... and our rider overtakes it", "the learner overtook him wide", ", then the trainee
+    went round her"), and whose object is a road user said before as a pronoun, by their mention's
+    start, each True: the one passed is that road user, not the subject (no one is their own object),
+    and the subject is the ego's side told by its role. A subject read as a road user ("a van overtook
+    him") keeps its verb, and so does a verb of passing with no object pronoun after it."""
+    out: dict[int, bool] = {}
+    flat = [m for _, ms in clauses for m in ms]
+    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    for m in flat:
+        after = tokens[m.end : m.end + 2]
+        if m.slot != "behaviour" or not _passes(m) or not after:
+            continue
+        if not (after[0] in _OBJECT_PRONOUNS or (after[0] in _ROUND and after[1:] and after[1] in _OBJECT_PRONOUNS)):
+            continue
+        j = m.start
+        while j > 0 and tokens[j - 1] in _BETWEEN_SUBJECT_AND_VERB:
+            j -= 1
+        i = j
+        while i > 0 and j - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
+            i -= 1
+        if i == j:
+            continue
+        i -= i > 0 and tokens[i - 1] in _SUBJECT_OPENERS
+        if i == 0 or tokens[i - 1] in _CLAUSE_OPENERS:
+            out[m.start] = True
     return out
 
 
