@@ -253,10 +253,14 @@ def test_a_gap_said_before_the_ego_sees_the_road_user_is_that_road_user_s(text, 
     assert a.distance_m == pytest.approx(gap, abs=0.1)
 
 
-def test_where_the_ego_stops_is_no_gap_of_the_road_user_it_stops_for():
-    """ "I stopped 2 m short" is how the narrator's stop went, not where the van was."""
-    [a] = read("A van pulled out of a side road on my left. I stopped 2 m short of it at 20 mph.").actors
+def test_where_the_ego_stops_is_no_gap_of_the_road_user_it_stops_behind():
+    """ "I stopped 2 m short" of a van going along the ego's road is how the narrator's stop went, not
+    where the van was; of one that pulled out across its path it is how near that came (its gap, see
+    tests/test_language_quantity.py)."""
+    [a] = read("The van in front braked hard. I stopped 2 m short of it at 20 mph.").actors
     assert a.distance_m is None
+    [a] = read("A van pulled out of a side road on my left. I stopped 2 m short of it at 20 mph.").actors
+    assert a.distance_m == pytest.approx(2.0)
 
 
 # --- a red-light runner at a stated gap -----------------------------------------------------------------

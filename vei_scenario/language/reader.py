@@ -65,6 +65,7 @@ from vei_scenario.language import (
     scenery,
     sides,
     start_gap,
+    stopped_short,
     whose_act,
     writer_on_foot,
 )
@@ -298,6 +299,7 @@ class _Actor:
     member_named: bool = False  # told apart from its group ("the first one", "the other")
     counted: bool = False  # named in a group a number counts ("two lads on scooters"), told apart or not
     named_end: int = -1  # where its first name ends in the scanned words (-1: not named there)
+    stopped_short_m: float | None = None  # how far short of it the ego stopped ("I stopped 2 m short of him")
     hides: bool = False  # named as what someone comes out from behind or between
     passed: bool = False  # what the ego passes ("the ego overtakes her"): going along ahead of it
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
@@ -2322,6 +2324,8 @@ def _read(text: str) -> Reading:
                 continue
             if reacting and m.slot in ("distance", "speed", "accel"):
                 ignored.append(m.words)  # ("stopped 2 m short": how the narrator's stop went)
+                if m.slot == "distance" and actors:
+                    _gap_holder(actors).stopped_short_m = m.value  # (how near it came: stopped_short)
                 prev = m
                 continue
             if (
@@ -2362,6 +2366,8 @@ def _read(text: str) -> Reading:
                 gap_to = _gap_to(mentions, k) if who == "ego" and m.slot == "distance" else None
                 if who == "ego" and m.slot == "distance" and clause_subject == "ego" and _stop_before(prev):
                     ignored.append(m.words)  # ("I stopped 2 m short of it": how the ego's stop went, no gap)
+                    if actors:
+                        _gap_holder(actors).stopped_short_m = m.value  # (how near it came: stopped_short)
                     prev = m
                     continue
                 if gap_to == "road user":
@@ -2817,6 +2823,8 @@ def _read(text: str) -> Reading:
         r.actors.append(spec)
     for spec in r.actors:  # ("pulled out in front of me. Braked": the ego's brake, not the road user's)
         spec.behaviours = crossing_reaction.drop_egos_reactions(spec.behaviours)
+    for a, spec in zip(actors, r.actors):  # ("a boy ran out and I stopped 2 m short of him": how near it came)
+        stopped_short.gap_from_the_stop(spec, a.stopped_short_m)
     for a, spec in zip(actors, r.actors):  # what an oncoming car overtakes comes towards the ego too
         k = next((k for k, x in enumerate(actors) if x is a.object_of), None)
         if (spec.relation is None or (a.relation is None and not a.said)) and k is not None:
