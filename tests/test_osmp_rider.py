@@ -174,3 +174,20 @@ def test_the_pythonfmu_participants_declare_what_the_native_ones_do(case_study, 
         assert declared.get("enabled", ("fixed", "Boolean", "false")) == ("fixed", "Boolean", "false")
         assert declared.get("time_shift_s", ("fixed", "Real", "0.0")) == ("fixed", "Real", "0.0")
         assert declared.get("rider_type", ("fixed", "String", "replay")) == ("fixed", "String", "replay")
+
+
+def test_a_sweep_hosts_each_variant_of_a_pythonfmu_participant_in_a_process_of_its_own(case_study, defaults_built):
+    """A participant instantiable once per process still serves a sweep: every variant runs (none is
+    refused as a second instance) and each row is the built-in models' row for the same values."""
+    from vei_scenario.sut import parse_controller_options
+    from vei_scenario.sweep.evaluate import evaluate_local
+
+    controllers = tuple(
+        parse_controller_options([f"Ego={defaults_built['cap']}", f"scooter_1={defaults_built['sfm']}"])
+    )
+    variants = [{"TimeShift": s, "RiderType": r, "CapEnabled": "true"} for s, r in (("1.5", "normal"), ("2.197", "aggressive"), ("3.0", "aggressive"))]  # fmt: skip
+    hosted = evaluate_local(str(case_study), variants, 0.01, workers=2, controllers=controllers)
+    built_in = evaluate_local(str(case_study), variants, 0.01, workers=1)
+    assert [r["status"] for r in hosted] == ["ok"] * 3, [r["error"] for r in hosted]
+    for h, b in zip(hosted, built_in):
+        assert h["metrics"]["min_gap_m"] == pytest.approx(b["metrics"]["min_gap_m"], abs=1e-6)

@@ -15,7 +15,7 @@ no vei, no Python where they run) or, as the fallback where protoc-c and the pro
 missing, with pythonfmu (this module's :class:`OsmpBody`). Those need a Python with vei-scenario (and
 pythonfmu's runtime) where they run, as ``--backend python`` FMUs do, and like them can be
 instantiated once per process only (``canBeInstantiatedOnlyOncePerProcess``): one ``vei run`` per
-process, not a study or a sweep.
+process, or a sweep that spawns a process for each variant; not a study.
 """
 
 from __future__ import annotations

@@ -205,6 +205,8 @@ def evaluate_local(
     fmu = _kernel_fmu(scenario, dt, zone_ttc, controllers)
     if fmu is not None:
         return _evaluate_kernel_fmu(fmu, scenario, variants, dt, workers, progress, zone_ttc, controllers)
+    if any(_once_per_process(c) for c in controllers):
+        return _evaluate_one_per_process(scenario, variants, dt, workers, progress, zone_ttc, controllers)
     out: list[dict] = []
     if workers > 1 and len(variants) > 1:
         # The first variant here: it reads the scenario's files (the workers then inherit them read)
@@ -252,6 +254,44 @@ def _evaluate_pool(scenario, variants, dt, workers, progress, zone_ttc: str = "2
                 out.extend(rows)
                 if progress:
                     progress(len(c))
+    except BrokenProcessPool:
+        raise VeiInputError(None, "--workers", "a worker process died (out of memory, or killed)") from None
+    except TimeoutError:
+        raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s") from None
+    return out
+
+
+def _once_per_process(spec) -> bool:
+    """Whether ``spec`` is an OSMP participant that declares it can be instantiated only once per process
+    (a pythonfmu build): it runs in vei's process, so no second run may share that process with it."""
+    try:
+        return bool(spec.osmp and spec.load().once_per_process)
+    except VeiError:  # (a controller that does not load: each variant's run says why)
+        return False
+
+
+def _evaluate_one_per_process(
+    scenario, variants, dt, workers, progress, zone_ttc: str = "2d", controllers=()
+) -> list[dict]:
+    """Each variant in a fresh process of its own: a participant instantiable once per process is then
+    instantiated once in each. The processes are spawned (a forked one would inherit this process's
+    instance) on ``workers`` cores; rows come back in variant order."""
+    import multiprocessing
+    from concurrent.futures.process import BrokenProcessPool
+
+    n = len(variants)
+    context = multiprocessing.get_context("spawn")
+    try:
+        with ProcessPoolExecutor(
+            max_workers=max(1, min(workers, n)), mp_context=context, max_tasks_per_child=1
+        ) as pool:
+            rows = pool.map(evaluate_variant, [scenario] * n, variants, [dt] * n, [zone_ttc] * n, [controllers] * n,
+                            timeout=WATCHDOG_S)  # fmt: skip
+            out = []
+            for row in rows:
+                out.append(row)
+                if progress:
+                    progress(1)
     except BrokenProcessPool:
         raise VeiInputError(None, "--workers", "a worker process died (out of memory, or killed)") from None
     except TimeoutError:
