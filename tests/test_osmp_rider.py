@@ -185,7 +185,8 @@ def test_a_sweep_hosts_each_variant_of_a_pythonfmu_participant_in_a_process_of_i
     controllers = tuple(
         parse_controller_options([f"Ego={defaults_built['cap']}", f"scooter_1={defaults_built['sfm']}"])
     )
-    variants = [{"TimeShift": s, "RiderType": r, "CapEnabled": "true"} for s, r in (("1.5", "normal"), ("2.197", "aggressive"), ("3.0", "aggressive"))]  # fmt: skip
+    values = (("1.5", "normal"), ("2.197", "aggressive"), ("3.0", "aggressive"))
+    variants = [{"TimeShift": s, "RiderType": r, "CapEnabled": "true"} for s, r in values]
     hosted = evaluate_local(str(case_study), variants, 0.01, workers=2, controllers=controllers)
     built_in = evaluate_local(str(case_study), variants, 0.01, workers=1)
     assert [r["status"] for r in hosted] == ["ok"] * 3, [r["error"] for r in hosted]
