@@ -32,6 +32,7 @@ from functools import lru_cache
 from vei_scenario.language import (
     access_pull_out,
     addressee,
+    bystanders,
     crossing_reaction,
     crowds,
     discourse,
@@ -2886,6 +2887,7 @@ def _read(text: str) -> Reading:
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
     actors = narrator_ride.drop_narrators_ride(actors, r, scanned, _kind_at)  # ("I was on one of your e-scooters")
     actors = writer_on_foot.the_writer_met(actors, r, scanned, afoot)  # ("I stepped out and a taxi went past me")
+    actors = bystanders.drop_bystanders(actors, r)  # ("a car he loved ... a boy on a bike shot out")
     told = {w for cue in cues for w in cue.words.split()}  # (words the outcome was read from)
     r.ignored = [w for w in r.ignored if w not in told]
     if r.intent is None and not r.actors:
