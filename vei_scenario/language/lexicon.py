@@ -485,14 +485,9 @@ EGO_NOUNS = (
     "host vehicle",
     "host",  # (a fleet or test log's own vehicle: "host 88 km/h")
     "reporting vehicle",  # (a police or fleet report's own vehicle)
-    "sut",  # (system under test)
-    "system under test",
     "host car",
     "automated vehicle",
     "sv",
-    "sut",  # (system under test)
-    "system under test",
-    "reporting vehicle",  # (a report's own vehicle, by its role)
     "reporting car",
     "reporting driver",
     "robotaxi",  # (an automated vehicle, in its usual sense: the one under test)
@@ -501,7 +496,6 @@ EGO_NOUNS = (
     "driverless vehicle",
     "self-driving car",
     "self-driving vehicle",
-    "automated vehicle",
     "automated car",
     "autonomous car",
     "safety driver",  # (the ego's own crew, by role: at its wheel)
