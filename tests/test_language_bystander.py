@@ -17,7 +17,9 @@ from vei_scenario.language.reading import ActorSpec, Reading
 
 def _gathered(**said) -> SimpleNamespace:
     """What the reader gathers of a road user of which nothing more than ``said`` is said."""
-    return SimpleNamespace(**{"stationary": False, "acted_on": False, "object_of": None, "said": set(), **said})
+    return SimpleNamespace(
+        **{"stationary": False, "acted_on": False, "object_of": None, "said": set(), "seen": False, "det": "a", **said}
+    )
 
 
 def _goes_on(**spec) -> ActorSpec:
@@ -105,3 +107,17 @@ def test_two_going_on_and_nobody_acting_stay() -> None:
 )
 def test_road_users_that_act_or_are_placed_stay(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("My mum saw the van hit a jogger.", ["pedestrian", "van"]),
+        ("A lorry went through on red, and another lorry followed it through a second later.", ["truck", "truck"]),
+    ],
+    ids=["watched-doing-something", "one-more-of-its-kind"],
+)
+def test_a_vehicle_watched_or_told_apart_as_another_stays(text, expected):
+    """A vehicle whose deed the reader has no verb for stays when it is watched doing it, or told as one
+    more of its kind: it is in the situation, not only named."""
+    assert sorted(kinds(text)) == expected

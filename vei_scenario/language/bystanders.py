@@ -10,7 +10,9 @@ stays.
 
 Only vehicles are read so: a walker or rider said to go along is out on the road. A road user told
 anything of its own stays: where it is ("on my left", "ahead"), how fast, how far,
-that it stands, or that someone does something to it ("overtook a van", "hit a car").
+that it stands, that someone does something to it ("overtook a van", "hit a car"), that it is watched
+doing something ("saw the car hit a cyclist": its deed is what was seen, though no verb of going names
+it), or that it is one more of its kind ("another car ran it too": told apart from the one before).
 """
 
 from __future__ import annotations
@@ -34,11 +36,13 @@ class _Gathered(Protocol):
     acted_on: bool
     object_of: object
     said: set
+    seen: bool
+    det: str
 
 
 def _only_named(a: _Gathered, spec: ActorSpec) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is only named: it goes on, nowhere said, with no
-    speed or gap, standing nowhere, no one's object."""
+    speed or gap, standing nowhere, no one's object, not watched, not one more of its kind."""
     return (
         spec.kind in _VEHICLES
         and [b[0] for b in spec.behaviours] == [_GOING_ON]
@@ -49,6 +53,8 @@ def _only_named(a: _Gathered, spec: ActorSpec) -> bool:
         and not a.acted_on
         and a.object_of is None
         and not a.said
+        and not a.seen
+        and a.det != "another"
     )
 
 
