@@ -19,14 +19,12 @@ from __future__ import annotations
 
 from typing import Protocol
 
+from vei_scenario.language.ego import VEHICLES
 from vei_scenario.language.ego_double import without_road_user
 from vei_scenario.language.reading import ActorSpec, Reading
 
 #: What a road user does that is no act towards anyone: it goes on (said, or read where nothing is).
 _GOING_ON = "keep_going"
-#: Vehicles: a walker or rider said to go along ("a jogger was running along the road") is out on
-#: the road doing so, while a vehicle is named as often as a thing owned, seen or talked about.
-_VEHICLES = frozenset(("car", "van", "truck"))
 
 
 class _Gathered(Protocol):
@@ -44,7 +42,7 @@ def _only_named(a: _Gathered, spec: ActorSpec) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is only named: it goes on, nowhere said, with no
     speed or gap, standing nowhere, no one's object, not watched, not one more of its kind."""
     return (
-        spec.kind in _VEHICLES
+        spec.kind in VEHICLES  # (a walker or rider said to go along is out on the road doing so)
         and [b[0] for b in spec.behaviours] == [_GOING_ON]
         and spec.relation is None
         and spec.speed_mps is None

@@ -46,7 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec
-from vei_scenario.language.settings import negated
+from vei_scenario.language.settings import FOOT_CROSSINGS, negated
 from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
 from vei_scenario.language.word_mention import word_mention
 
@@ -2311,8 +2311,6 @@ def with_a_thing_out_into_the_road(clauses: list, tokens: list[str]) -> list:
     return out
 
 
-#: Words that make a place a crossing for people on foot ("the crosswalk", "a zebra crossing").
-_FOOT_CROSSING = frozenset(("crosswalk", "crosswalks", "zebra", "pelican", "puffin", "toucan", "pedestrian"))
 #: Prepositions that put a road user in the crossing itself, out on the road ("halfway over the zebra"; not
 #: "at" or "by" it).
 _IN_IT = frozenset(("in", "on", "onto", "into", "across", "over"))
@@ -2342,7 +2340,7 @@ def on_a_foot_crossing(clauses: list, tokens: list[str]) -> list:
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(mentions):
-            if m.slot != "kerb" or not set(m.words.split()) & _FOOT_CROSSING:
+            if m.slot != "kerb" or not set(m.words.split()) & FOOT_CROSSINGS:
                 continue
             before = _preposition_before(tokens, m.start)
             entering = bool(set(lemmas(before).get("VERB", ())) & _ENTER)

@@ -692,13 +692,13 @@ def streets_meet(text: str, said: str) -> bool:
 
 
 #: Words that make a crossing one for people on foot ("a zebra crossing", "the pelican", "a crosswalk").
-_FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
+FOOT_CROSSINGS = frozenset({"zebra", "pelican", "puffin", "toucan", "pedestrian", "crosswalk", "crosswalks"})
 
 
 def foot_crossing_named_before(tokens: list[str], i: int) -> bool:
     """Whether a crossing for people on foot is named before token ``i``: then "the crossing" at ``i``
     is that one, a known mention (the article says so), and not a junction."""
-    return any(t in _FOOT_CROSSINGS for t in tokens[:i])
+    return any(t in FOOT_CROSSINGS for t in tokens[:i])
 
 
 #: Words before a part of the day that make it a time said of the story ("last night", "this morning",
@@ -770,7 +770,7 @@ def signalled_junction(text: str, said: str) -> bool:
     a signal said by its colour (no foot crossing named), lights named by their street, or two streets
     written with a slash."""
     if (_RED_RUN.search(said) or _SIGNAL_COLOUR.search(said)) and not set(said.split()) & (
-        _FOOT_CROSSINGS | {"crossing"}
+        FOOT_CROSSINGS | {"crossing"}
     ):
         return True
     return _NAMED_LIGHTS.search(text) is not None or _SLASHED_STREETS.search(text) is not None

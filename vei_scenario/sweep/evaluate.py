@@ -197,7 +197,9 @@ def evaluate_local(
     """Rows of ``variants`` in variant order on ``workers`` local cores (default: all): a vei-compiled
     loop through the sweep kernel on threads, any other scenario (and any with a user's controller,
     ``controllers``) through the interpreter, in this process or, when the work repays them, in forked
-    workers beside it."""
+    workers beside it. A participant that can be instantiated only once per process has each variant
+    run in a spawned process of its own (a script calling this then needs the usual
+    ``if __name__ == "__main__":`` guard of spawned multiprocessing)."""
     workers = workers or os.cpu_count() or 1
     native = _native_engine(scenario, dt, zone_ttc, controllers)
     if native is not None:
@@ -275,28 +277,28 @@ def _evaluate_one_per_process(
 ) -> list[dict]:
     """Each variant in a fresh process of its own: a participant instantiable once per process is then
     instantiated once in each. The processes are spawned (a forked one would inherit this process's
-    instance) on ``workers`` cores; rows come back in variant order."""
+    instance) on ``workers`` cores and each ends after its variant; rows come back in variant order. A
+    variant that gives no row within the watchdog stops the sweep with one line, and its process is
+    killed, not waited for."""
     import multiprocessing
-    from concurrent.futures.process import BrokenProcessPool
 
-    n = len(variants)
-    context = multiprocessing.get_context("spawn")
-    try:
-        with ProcessPoolExecutor(
-            max_workers=max(1, min(workers, n)), mp_context=context, max_tasks_per_child=1
-        ) as pool:
-            rows = pool.map(evaluate_variant, [scenario] * n, variants, [dt] * n, [zone_ttc] * n, [controllers] * n,
-                            timeout=WATCHDOG_S)  # fmt: skip
-            out = []
-            for row in rows:
-                out.append(row)
-                if progress:
-                    progress(1)
-    except BrokenProcessPool:
-        raise VeiInputError(None, "--workers", "a worker process died (out of memory, or killed)") from None
-    except TimeoutError:
-        raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s") from None
-    return out
+    args = [(scenario, v, dt, zone_ttc, controllers) for v in variants]
+    out: list[dict] = []
+    with multiprocessing.get_context("spawn").Pool(max(1, min(workers, len(args))), maxtasksperchild=1) as pool:
+        rows = pool.imap(_evaluate_args, args, chunksize=1)
+        for _ in args:
+            try:
+                out.append(rows.next(timeout=WATCHDOG_S))
+            except multiprocessing.TimeoutError:
+                raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s") from None
+            if progress:
+                progress(1)
+    return out  # (leaving the block terminates the pool: no process outlives the sweep)
+
+
+def _evaluate_args(args: tuple) -> dict:
+    """:func:`evaluate_variant` of one packed variant (what a pool's worker is given)."""
+    return evaluate_variant(*args)
 
 
 def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc: str = "2d") -> list[dict]:
