@@ -73,6 +73,8 @@ FIRST = {
     "language_independent_z20.json": ((50, 50, 23, 49), "sealed for two rounds of reader work"),
     "language_independent_z21.json": ((50, 50, 9, 45), "sealed for two rounds of reader work"),
     "language_independent_z22.json": ((50, 50, 14, 46), "sealed for two rounds of reader work"),
+    "language_independent_z23.json": ((50, 50, 7, 40), "sealed for a round of reader work"),
+    "language_independent_z24.json": ((50, 50, 7, 43), "sealed for a round of reader work"),
 }
 
 
