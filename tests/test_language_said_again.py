@@ -136,3 +136,9 @@ def test_self_repair_near_misses(text: str, expected: int) -> None:
     """Near misses: the same words said again with no modifier after them (a count, "a scooter, a
     scooter and ..."), and a repair that adds an adjective (already one road user), keep their counts."""
     assert len(read(text).actors) == expected
+
+
+def test_a_person_word_that_ends_the_text_is_read_without_error() -> None:
+    """ "... the one-way fella" ends the text: what follows the person's word is asked for past the
+    last word, and is nothing (an ojek, a motorbike taxi, is the road user)."""
+    assert kinds("ojek against the one-way fella") == ["car"]

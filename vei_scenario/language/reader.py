@@ -664,7 +664,10 @@ def _relation_length(tokens: list[str], k: int) -> int:
 
 
 def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
-    """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`)."""
+    """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`; also
+    past the last word, where callers ask what follows a word that ends the text)."""
+    if not 0 <= i < len(tokens):
+        return None
     key = _best(tokens, i)
     if key is not None and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
         if tokens[i + len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
