@@ -192,3 +192,24 @@ def test_a_sweep_hosts_each_variant_of_a_pythonfmu_participant_in_a_process_of_i
     assert [r["status"] for r in hosted] == ["ok"] * 3, [r["error"] for r in hosted]
     for h, b in zip(hosted, built_in):
         assert h["metrics"]["min_gap_m"] == pytest.approx(b["metrics"]["min_gap_m"], abs=1e-6)
+
+
+def test_a_variant_whose_process_dies_is_an_error_row_and_the_others_keep_their_order(case_study, tmp_path):
+    """One process a variant: a system under test that kills its process (here it aborts in its first
+    step) makes those variants' rows errors that say so; without it, the rows are the in-process ones,
+    in variant order."""
+    from vei_scenario.sut import parse_controller_options
+    from vei_scenario.sweep.evaluate import _evaluate_one_per_process, evaluate_local
+
+    crashing = tmp_path / "crashing.py"
+    crashing.write_text(
+        "import os\n\n\nclass Crash:\n    def __init__(self, **properties):\n        pass\n\n"
+        "    def step(self, *args, **kwargs):\n        os.abort()\n"
+    )
+    variants = [{"TimeShift": s, "CapEnabled": "true"} for s in ("1.5", "2.197", "3.0")]
+    aborting = tuple(parse_controller_options([f"Ego={crashing}:Crash"]))
+    dead = _evaluate_one_per_process(str(case_study), variants[:2], 0.01, 2, None, controllers=aborting)
+    assert [r["status"] for r in dead] == ["error", "error"]
+    assert all("ended without its row" in r["error"] for r in dead), dead
+    rows = _evaluate_one_per_process(str(case_study), variants, 0.01, 2, None)
+    assert rows == evaluate_local(str(case_study), variants, 0.01, workers=1)

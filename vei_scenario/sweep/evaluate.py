@@ -277,28 +277,56 @@ def _evaluate_one_per_process(
 ) -> list[dict]:
     """Each variant in a fresh process of its own: a participant instantiable once per process is then
     instantiated once in each. The processes are spawned (a forked one would inherit this process's
-    instance) on ``workers`` cores and each ends after its variant; rows come back in variant order. A
-    variant that gives no row within the watchdog stops the sweep with one line, and its process is
-    killed, not waited for."""
+    instance), ``workers`` at a time; rows come back in variant order. A process that ends without its
+    row (the participant crashed it) makes that variant's row an error; no row within the watchdog
+    stops the sweep with one line, and the processes still running are killed, not waited for."""
     import multiprocessing
+    from multiprocessing.connection import wait
 
-    args = [(scenario, v, dt, zone_ttc, controllers) for v in variants]
-    out: list[dict] = []
-    with multiprocessing.get_context("spawn").Pool(max(1, min(workers, len(args))), maxtasksperchild=1) as pool:
-        rows = pool.imap(_evaluate_args, args, chunksize=1)
-        for _ in args:
+    context = multiprocessing.get_context("spawn")
+    rows: list[dict] = [{}] * len(variants)
+    running: dict = {}  # the end a row comes on -> (variant index, its process)
+    deadline = time.monotonic() + WATCHDOG_S
+    started = 0
+    try:
+        for _ in variants:
+            while started < len(variants) and len(running) < max(1, workers):
+                end, send = context.Pipe(duplex=False)
+                args = (send, scenario, variants[started], dt, zone_ttc, controllers)
+                process = context.Process(target=_evaluate_into, args=args, daemon=True)
+                process.start()
+                send.close()
+                running[end], started = (started, process), started + 1
+            ready = wait(list(running), timeout=max(0.0, deadline - time.monotonic()))
+            if not ready:
+                raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s")
+            end = ready[0]
+            i, process = running.pop(end)
             try:
-                out.append(rows.next(timeout=WATCHDOG_S))
-            except multiprocessing.TimeoutError:
-                raise VeiInputError(None, "sweep", f"no result from the workers within {WATCHDOG_S:g} s") from None
+                rows[i] = end.recv()
+            except EOFError:
+                process.join()
+                died = f"the process running this variant ended without its row (exit code {process.exitcode})"
+                rows[i] = {"status": "error", "error": died, "metrics": {}}
+            end.close()
+            process.join()
             if progress:
                 progress(1)
-    return out  # (leaving the block terminates the pool: no process outlives the sweep)
+    finally:
+        for _, process in running.values():
+            process.kill()
+            process.join()
+    return rows
 
 
-def _evaluate_args(args: tuple) -> dict:
-    """:func:`evaluate_variant` of one packed variant (what a pool's worker is given)."""
-    return evaluate_variant(*args)
+def _evaluate_into(send, *args) -> None:
+    """Run one variant (:func:`evaluate_variant` of ``args``) in a spawned process and send its row on
+    ``send``; the process then ends without the finalisers of the native libraries it loaded."""
+    from vei_scenario.process_end import end_process
+
+    send.send(evaluate_variant(*args))
+    send.close()
+    end_process(0)
 
 
 def _evaluate_native(native, scenario, variants, dt, workers, progress, zone_ttc: str = "2d") -> list[dict]:
