@@ -598,7 +598,7 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
     noun such a subject owns ("let the player's braking decide") is theirs as well."""
     out: dict[int, bool] = {}
     flat = [m for _, ms in clauses for m in ms]
-    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    read = _read_positions(flat)
     by_start = {m.start: m for m in flat if m.slot in _ACT_SLOTS}
     for s, tok in enumerate(tokens):
         if s and tokens[s - 1] not in _SENTENCE_ENDS:
@@ -619,9 +619,7 @@ def unread_subjects_reactions(clauses: list, tokens: list[str]) -> dict[int, boo
     for p, tok in enumerate(tokens):  # ("let the player's braking decide": the player's, said as a noun)
         if tok != "'s":
             continue
-        i = p
-        while i > 0 and p - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
-            i -= 1
+        i = _unread_nouns_before(tokens, p, read)
         if i == p or not (i == 0 or tokens[i - 1] in _SUBJECT_OPENERS or tokens[i - 1] in _SENTENCE_ENDS):
             continue
         noun = next((by_start[k] for k in range(p + 1, p + 3) if k in by_start), None)
@@ -643,7 +641,7 @@ def unread_subjects_passes(clauses: list, tokens: list[str]) -> dict[int, bool]:
     him") keeps its verb, and so does a verb of passing with no object pronoun after it."""
     out: dict[int, bool] = {}
     flat = [m for _, ms in clauses for m in ms]
-    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    read = _read_positions(flat)
     for m in flat:
         after = tokens[m.end : m.end + 2]
         if m.slot != "behaviour" or not _passes(m) or not after:
@@ -653,15 +651,28 @@ def unread_subjects_passes(clauses: list, tokens: list[str]) -> dict[int, bool]:
         j = m.start
         while j > 0 and tokens[j - 1] in _BETWEEN_SUBJECT_AND_VERB:
             j -= 1
-        i = j
-        while i > 0 and j - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
-            i -= 1
+        i = _unread_nouns_before(tokens, j, read)
         if i == j:
             continue
         i -= i > 0 and tokens[i - 1] in _SUBJECT_OPENERS
         if i == 0 or tokens[i - 1] in _CLAUSE_OPENERS:
             out[m.start] = True
     return out
+
+
+def _read_positions(flat: list) -> set[int]:
+    """The token positions the reader's mentions ``flat`` cover (a verb it does not know covers none):
+    a word there is read as something, so it is no unread noun of a subject."""
+    return {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+
+
+def _unread_nouns_before(tokens: list[str], end: int, read: set[int]) -> int:
+    """Where the run of up to three common nouns the reader read as nothing, right before ``end``,
+    starts (``end`` where there is none): a subject told by its role ("the driving examiner")."""
+    i = end
+    while i > 0 and end - i < 3 and i - 1 not in read and _common_noun(tokens[i - 1]):
+        i -= 1
+    return i
 
 
 def _common_noun(word: str) -> bool:
@@ -685,7 +696,7 @@ def agentless_reactions(clauses: list, tokens: list[str]) -> dict[int, bool]:
     before. One whose agent is said ("... initiated by the lorry") is that agent's and stays."""
     out: dict[int, bool] = {}
     flat = [m for _, ms in clauses for m in ms]
-    read = {i for m in flat if m.slot != "unknown_verb" for i in range(m.start, max(m.end, m.start + 1))}
+    read = _read_positions(flat)
     for m in flat:
         if m.slot != "behaviour" or m.value[0] not in _REACTIONS:
             continue

@@ -78,6 +78,8 @@ STANDING_MPS = 0.5
 MOVING_MPS = 1.0
 #: How long after its planned closing time a cut-in goes ahead without its gap (s).
 LATE_S = 2.0
+#: How hard a standing road user speeds up as it pulls out (m/s²) where its performance says nothing.
+PULL_OUT_ACCEL_MPS2 = 3.0
 
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
@@ -87,7 +89,7 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     duration = value(cfg, PARAMETERS, "lane_change_s")
     if ctx.actor_speed_mps < STANDING_MPS:  # pulling out: off when the ego is a lane change away from the gap
         merge = initial_speed(ctx.ego_speed_mps, cfg)
-        accel = ctx.actor_max_accel_mps2 or 3.0
+        accel = ctx.actor_max_accel_mps2 or PULL_OUT_ACCEL_MPS2
         actions = [lane_change_to_ego(ctx.ego, duration), speed_action(merge, rate=accel)]
         return [
             Step("cut_in", actions, conditions=[Condition("ego_within", pull_out_distance_m(ctx.ego_speed_mps, cfg))])
@@ -146,7 +148,9 @@ def across_distance_m(ego_speed: float, lateral_m: float, cfg: dict, vehicle: tu
     :func:`~vei_scenario.language.behaviours.turn_into.time_to_join_s`, less how far along the road it
     has gone meanwhile). Why one helper: the writer's trigger and the sampler's spawn must agree."""
     turn_m, along_m = turn_into.roadside_turn_m(lateral_m, NOSED_OUT_RAD)
-    t_actor = turn_into.time_to_join_s(turn_m, across_turn_cfg(ego_speed, cfg, vehicle[2] or 3.0), *vehicle)
+    t_actor = turn_into.time_to_join_s(
+        turn_m, across_turn_cfg(ego_speed, cfg, vehicle[2] or PULL_OUT_ACCEL_MPS2), *vehicle
+    )
     return max(1.0, value(cfg, PARAMETERS, "gap_m") + ego_speed * t_actor - along_m)
 
 
@@ -156,7 +160,7 @@ def across_from_the_far_kerb(ctx: ActorContext, cfg: dict) -> list[Step]:
     ego's lane, then speed up to its cut-in speed; set off when the ego is :func:`across_distance_m`
     away (in front of a standing ego: at once)."""
     turn = turn_into.JOIN_SPEED_CAP_MPS
-    v, a = ctx.reachable(initial_speed(ctx.ego_speed_mps, cfg), ctx.actor_max_accel_mps2 or 3.0)
+    v, a = ctx.reachable(initial_speed(ctx.ego_speed_mps, cfg), ctx.actor_max_accel_mps2 or PULL_OUT_ACCEL_MPS2)
     steps = [Step(NAME, turn_into.turn_out_actions(ctx, min(v, turn), a))]
     if ctx.ego_speed_mps >= turn_into.EGO_AT_REST_MPS:
         vehicle = (ctx.actor_length_m, ctx.actor_max_speed_mps, a)
