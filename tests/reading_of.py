@@ -20,3 +20,10 @@ def ego_kph(text: str) -> float | None:
 def moves(text: str) -> list[list[str]]:
     """The behaviours of each road user read from ``text``, by name, in the order the reader lists them."""
     return [[b[0] for b in a.behaviours] for a in read(text).actors]
+
+
+def first_moves_not_on_foot(text: str) -> list[str]:
+    """The behaviours of the first road user read from ``text`` that is not a walker, or of the first."""
+    actors = read(text).actors
+    actor = next((a for a in actors if a.kind != "pedestrian"), actors[0])
+    return [b[0] for b in actor.behaviours]

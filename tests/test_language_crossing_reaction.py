@@ -7,15 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from tests.reading_of import moves
 from vei_scenario.language import crossing_reaction
-from vei_scenario.language.reader import read
 
 _STOPS = {"stop", "sudden_stop", "change_speed"}
-
-
-def _acts(text: str) -> list[list[str]]:
-    """The behaviours of each road user read from ``text``."""
-    return [[b[0] for b in a.behaviours] for a in read(text).actors]
 
 
 @pytest.mark.parametrize(
@@ -47,7 +42,7 @@ def _acts(text: str) -> list[list[str]]:
     ],
 )
 def test_a_brake_after_a_crossing_is_the_egos(text: str) -> None:
-    acts = _acts(text)
+    acts = moves(text)
     assert acts, text
     assert not any(set(a) & _STOPS for a in acts), acts
 
@@ -63,7 +58,7 @@ def test_a_brake_after_a_crossing_is_the_egos(text: str) -> None:
     ],
 )
 def test_its_own_stop_stays(text: str, stop: bool) -> None:
-    acts = _acts(text)
+    acts = moves(text)
     assert any(set(a) & {"stop", "sudden_stop"} for a in acts) is stop, acts
 
 
@@ -76,7 +71,7 @@ def test_its_own_stop_stays(text: str, stop: bool) -> None:
     ],
 )
 def test_a_brake_after_a_lane_move_stays(text: str) -> None:
-    acts = _acts(text)
+    acts = moves(text)
     assert any("sudden_stop" in a for a in acts), acts
 
 

@@ -8,14 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from vei_scenario.language.reader import read
-
-
-def _first(text: str) -> list[str]:
-    """The behaviours of the first road user read from ``text`` that is not a walker, or of the first."""
-    actors = read(text).actors
-    actor = next((a for a in actors if a.kind != "pedestrian"), actors[0])
-    return [b[0] for b in actor.behaviours]
+from tests.reading_of import first_moves_not_on_foot, moves
 
 
 @pytest.mark.parametrize(
@@ -37,7 +30,7 @@ def _first(text: str) -> list[str]:
     ],
 )
 def test_coming_at_the_ego_on_its_half_told_in_the_third_person_is_the_wrong_way(text: str) -> None:
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -51,7 +44,7 @@ def test_coming_at_the_ego_on_its_half_told_in_the_third_person_is_the_wrong_way
     ],
 )
 def test_coming_at_the_ego_in_the_middle_of_the_road_is_the_wrong_way(text: str) -> None:
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -67,13 +60,13 @@ def test_coming_at_the_ego_in_the_middle_of_the_road_is_the_wrong_way(text: str)
     ],
 )
 def test_own_half_or_the_egos_way_is_not_the_wrong_way(text: str) -> None:
-    assert "wrong_way" not in _first(text)
+    assert "wrong_way" not in first_moves_not_on_foot(text)
 
 
 def test_she_kept_to_her_side_is_her_own_half() -> None:
     """A clause whose subject is the pronoun's own person: her half is hers, whoever she is."""
     text = "The driver said she kept to her side of the road and the cyclist came past her."
-    assert all(b[0] != "wrong_way" for a in read(text).actors for b in a.behaviours)
+    assert "wrong_way" not in [b for m in moves(text) for b in m]
 
 
 @pytest.mark.parametrize(
@@ -87,7 +80,7 @@ def test_she_kept_to_her_side_is_her_own_half() -> None:
 )
 def test_a_compass_point_against_the_lane_it_is_in_is_the_wrong_way(text: str) -> None:
     """A bare compass point right before a lane of the other heading, whatever kind of lane."""
-    assert _first(text) == ["wrong_way"]
+    assert first_moves_not_on_foot(text) == ["wrong_way"]
 
 
 @pytest.mark.parametrize(
@@ -98,7 +91,7 @@ def test_a_compass_point_against_the_lane_it_is_in_is_the_wrong_way(text: str) -
     ],
 )
 def test_a_compass_point_with_its_own_lane_or_a_place_is_not_the_wrong_way(text: str) -> None:
-    assert "wrong_way" not in _first(text)
+    assert "wrong_way" not in first_moves_not_on_foot(text)
 
 
 @pytest.mark.parametrize(
@@ -112,13 +105,13 @@ def test_a_compass_point_with_its_own_lane_or_a_place_is_not_the_wrong_way(text:
     ],
 )
 def test_against_the_way_one_may_go_however_said_is_the_wrong_way(text: str) -> None:
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 def test_against_the_direction_on_its_own_cycle_lane_is_not_head_on() -> None:
     """A rider against the traffic in a cycle lane of its own goes along that lane, not in the ego's."""
     text = "A cyclist was riding against the direction of traffic in the cycle lane on our left."
-    assert "wrong_way" not in _first(text)
+    assert "wrong_way" not in first_moves_not_on_foot(text)
 
 
 @pytest.mark.parametrize(
@@ -131,10 +124,10 @@ def test_against_the_direction_on_its_own_cycle_lane_is_not_head_on() -> None:
 )
 def test_a_stop_said_free_after_a_head_on_road_user_is_the_egos(text: str) -> None:
     """The ego's reaction, told after it, neither is its act nor hides its coming head-on."""
-    assert _first(text) == ["wrong_way"]
+    assert first_moves_not_on_foot(text) == ["wrong_way"]
 
 
 def test_its_own_stop_then_said_stays_its_own() -> None:
     """Its own stop, joined by "then" and placed in the road, is its act: it stays."""
     text = "A cyclist came straight at me in my lane and then stopped dead in the middle of the road."
-    assert {"stop", "sudden_stop"} & set(_first(text))
+    assert {"stop", "sudden_stop"} & set(first_moves_not_on_foot(text))

@@ -8,14 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from vei_scenario.language.reader import read
-
-
-def _first(text: str) -> list[str]:
-    """The behaviours of the first road user read from ``text`` that is not a walker, or of the first."""
-    actors = read(text).actors
-    actor = next((a for a in actors if a.kind != "pedestrian"), actors[0])
-    return [b[0] for b in actor.behaviours]
+from tests.reading_of import first_moves_not_on_foot, moves
 
 
 @pytest.mark.parametrize(
@@ -42,7 +35,7 @@ def _first(text: str) -> list[str]:
     ],
 )
 def test_coming_straight_at_the_ego_is_head_on_the_wrong_way(text: str) -> None:
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -65,7 +58,7 @@ def test_coming_straight_at_the_ego_is_head_on_the_wrong_way(text: str) -> None:
     ],
 )
 def test_towards_from_a_side_or_on_foot_is_not_the_wrong_way(text: str) -> None:
-    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
+    assert "wrong_way" not in [b for m in moves(text) for b in m]
 
 
 @pytest.mark.parametrize(
@@ -80,7 +73,7 @@ def test_towards_from_a_side_or_on_foot_is_not_the_wrong_way(text: str) -> None:
 )
 def test_towards_the_ego_in_its_lane_is_the_egos_lane(text: str) -> None:
     """The ego owns "its" right after it, said of one coming at it: the nearest noun owns the possessive."""
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -92,7 +85,7 @@ def test_towards_the_ego_in_its_lane_is_the_egos_lane(text: str) -> None:
     ],
 )
 def test_its_lane_of_one_going_the_egos_way_or_of_the_ego_itself_is_no_head_on(text: str) -> None:
-    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
+    assert "wrong_way" not in [b for m in moves(text) for b in m]
 
 
 @pytest.mark.parametrize(
@@ -107,7 +100,7 @@ def test_its_lane_of_one_going_the_egos_way_or_of_the_ego_itself_is_no_head_on(t
 )
 def test_at_the_ego_set_off_by_a_comma_is_still_said_of_the_travel(text: str) -> None:
     """A comma before "straight at me" sets off how the road user comes, not a new clause."""
-    assert _first(text)[0] == "wrong_way"
+    assert first_moves_not_on_foot(text)[0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -118,4 +111,4 @@ def test_at_the_ego_set_off_by_a_comma_is_still_said_of_the_travel(text: str) ->
     ],
 )
 def test_a_comma_does_not_join_a_place_one_comes_out_of_nor_make_towards_head_on(text: str) -> None:
-    assert "wrong_way" not in [b for a in read(text).actors for b in (x[0] for x in a.behaviours)]
+    assert "wrong_way" not in [b for m in moves(text) for b in m]

@@ -7,12 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from vei_scenario.language.reader import read
-
-
-def _first(text: str) -> list[str]:
-    """The behaviours of the first road user read from ``text``."""
-    return [b[0] for b in read(text).actors[0].behaviours]
+from tests.reading_of import moves
 
 
 @pytest.mark.parametrize(
@@ -31,7 +26,7 @@ def _first(text: str) -> list[str]:
     ],
 )
 def test_a_wrong_way_driver_named_in_brackets_goes_the_wrong_way(text: str) -> None:
-    assert _first(text)[0] == "wrong_way"
+    assert moves(text)[0][0] == "wrong_way"
 
 
 @pytest.mark.parametrize(
@@ -42,4 +37,4 @@ def test_a_wrong_way_driver_named_in_brackets_goes_the_wrong_way(text: str) -> N
     ],
 )
 def test_a_bracket_of_its_type_says_nothing_of_its_way(text: str) -> None:
-    assert "wrong_way" not in _first(text)
+    assert "wrong_way" not in moves(text)[0]
