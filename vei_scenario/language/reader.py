@@ -92,9 +92,11 @@ from vei_scenario.language.motion import (
     turn_across_side,
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
+from vei_scenario.language.no_ones_place import without_places_of_no_one
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
+from vei_scenario.language.rear_end import rear_ender_behind
 from vei_scenario.language.route import ego_route, instruction_at, turn_taken_at
 from vei_scenario.language.said_again import plural
 from vei_scenario.language.scene import only_the_scene, quoted_speakers
@@ -1815,6 +1817,7 @@ def _read(text: str) -> Reading:
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
     clauses = sides.into_the_ego_rear(experiencer.road_user_had_acting(clauses, scanned))
+    clauses = rear_ender_behind(without_places_of_no_one(clauses, scanned))  # ("rear-ended me", "nothing ahead")
     clauses = out_of_a_side_road(
         destinations_not_origins(outcome_not_behaviour(_drop_label(clauses), scanned), scanned), scanned
     )
@@ -2351,7 +2354,12 @@ def _read(text: str) -> Reading:
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             elif (
-                (clause_subject == "ego" or _asked_how_far(scanned, m) or _narrators_opening(scanned, mentions, k))
+                (
+                    clause_subject == "ego"
+                    or _asked_how_far(scanned, m)
+                    or _narrators_opening(scanned, mentions, k)
+                    or _of_a_subject_not_placed(scanned, mentions, k)
+                )
                 and m.value in _SEEN_FROM_OBJECT
                 and _object_follows(mentions, k)
             ):
@@ -3702,6 +3710,22 @@ def _narrators_opening(tokens: list[str], mentions, k: int) -> bool:
     if mentions[k].slot != "relation" or any(x.slot in ("actor", "member", "count") for x in mentions[:k]):
         return False
     return ego_speed.narrators_opening(tokens, mentions[k].start)
+
+
+#: Forms of "be" between a subject and where it is ("my wife was following a lorry").
+_BE_FORMS = frozenset({"is", "are", "was", "were"})
+
+
+def _of_a_subject_not_placed(tokens: list[str], mentions, k: int) -> bool:
+    """Whether relation ``mentions[k]`` is said, after a form of "be", of a subject the reader places as no
+    road user, with no one named before it in its clause ("My wife was following a lorry", "Dad was
+    behind a bus"): the person the story follows, at the wheel, as "I was behind the bus" is the
+    narrator; the road user named after it is the other way round from them (the lorry is ahead)."""
+    m = mentions[k]
+    if m.slot != "relation" or any(x.slot in ("actor", "pronoun", "member", "count") for x in mentions[:k]):
+        return False
+    subject = tokens[m.start - 2] if m.start >= 2 else ""
+    return tokens[m.start - 1] in _BE_FORMS and subject.isalpha() and subject not in FUNCTION_WORDS
 
 
 def _asked_how_far(tokens: list[str], m) -> bool:

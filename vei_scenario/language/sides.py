@@ -577,10 +577,12 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             return Said(start, j + 1, prep, ())
         if (end := part_after_side(tokens, j + 1)) is not None:  # ("the offside front corner")
             return Said(start, end, prep, ())
-        if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in ("on", "from", "off"):
+        if tokens[j + 1 : j + 2] not in (["lane"], ["left"], ["right"], ["hand"]) and prep in _KERB_SIDE_PREPOSITIONS:
             side = _side(tokens[j], "", left_hand, ring)  # "from the nearside": that kerb (a walker's),
-            # or the lane on that side (a driver's, "a car on the offside drifted in"): the reader says whose
-            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side), ("lane_side", side)))
+            # or the lane on that side (a driver's, "a car on the offside drifted in"): the reader says whose;
+            # come up or gone past on, as "the inside" (:func:`_bare_ring_side`), it comes from behind
+            behind = (("relation", "behind"),) if prep in _FROM_BEHIND or _particle_before(tokens, i) else ()
+            return Said(start, j + 1, prep, (("kerb", None), ("kerb_side", side), ("lane_side", side), *behind))
     if tokens[j] in _ENDS and tokens[j + 1 : j + 2] and tokens[j + 1] in VEHICLE_PARTS:
         return Said(start, j + 2, prep, ())  # "clipped his rear bumper": a part of a vehicle, no place
     restated = tokens[j + 1 : j + 2] in (["left"], ["right"]) and tokens[j + 2 : j + 3] in (["side"], ["kerb"])
@@ -686,6 +688,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
     return Said(start, end, prep, (("lane_side", side),))
 
 
+#: Prepositions a bare "nearside"/"offside" follows when it names a side of the ego ("up the nearside").
+_KERB_SIDE_PREPOSITIONS = frozenset({"on", "from", "off", "up"})
 #: Prepositions a bare "inside"/"outside" follows when it names a side of the ego ("up the inside").
 _ALONG = frozenset({"on", "up", "down", "along", "by", "past"})
 #: Prepositions of going up to and past the ego along its side: said of one that comes from behind.
