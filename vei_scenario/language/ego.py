@@ -578,6 +578,7 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
             return tokens
         dropped.extend(w for w in tokens[p.start : end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
         out = [*tokens[: p.start], "the", "ego", *tokens[end:]]
+        out = _introduced_as_ego(out, users[:n], vehicle, dropped)
         out = as_ego(out, kind_at, known, vehicle, dropped)
         same = {
             out[q.end - 1]
@@ -589,6 +590,19 @@ def _news_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
                 out = as_ego(out, kind_at, known, noun, dropped)
         return out
     return tokens
+
+
+def _introduced_as_ego(tokens: list[str], before: list, noun: str, dropped: list[str]) -> list[str]:
+    """``tokens`` with the one vehicle ``before`` introduced as new with ``noun`` in its name ("a Toyota
+    Hilux rammed a trailer ... the Toyota driver, travelling at 100 km/h, ...") said "the ego": "the <noun>
+    driver" points back to the vehicle "a <noun>" brought in, as any definite noun phrase does to its
+    antecedent. With two such vehicles ("a Honda ... another Honda") which one is meant stays open."""
+    new = [q for q in before if q.kind in VEHICLES and q.det in INDEFINITE and noun in tokens[q.head : q.end]]
+    if len(new) != 1:
+        return tokens
+    q = new[0]
+    dropped.extend(w for w in tokens[q.head : q.end] if w.isalpha())
+    return [*tokens[: q.start], "the", "ego", *tokens[q.end :]]
 
 
 #: Possessives a news report gives the driver it opens on ("his cab", "her van"), with the gender
