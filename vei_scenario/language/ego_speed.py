@@ -644,6 +644,8 @@ def bare_owned(tokens: list[str], i: int) -> bool:
 
 #: Nouns a speed with its unit names a limit of, after an article ("a 60 km/h zone", "the 40 mph limit").
 _LIMITED = frozenset({"zone", "limit", "limits", "area", "road", "street", "stretch", "section", "sign"})
+#: Of those nouns, the ones that name nothing but a limit: "<speed with its unit> zone" is one with no article.
+_ONLY_LIMITS = frozenset({"zone", "limit", "limits"})
 #: Words that bound the clause a counterfactual speed is said in ("..., had it been doing 30, ...").
 _CLAUSE_BOUNDS = frozenset({".", ";", "!", "?", ",", "and", "but", "when", "so", "then", "while", "because"})
 #: Modals of what would have happened or should have been ("would have stopped", "should have reduced").
@@ -712,6 +714,8 @@ def limits(tokens: list[str], speeds: set[int]) -> set[int]:
         end += end < len(tokens) and tokens[end] == "speed"
         if i and tokens[i - 1] in ("a", "an", "the") and end < len(tokens) and tokens[end] in _LIMITED:
             named.add(i)
+        elif end < len(tokens) and tokens[end] in _ONLY_LIMITS and tokens[i + 1] in V.SPEED_UNITS:
+            named.add(i)  # ("Route: Elm St, 35 mph zone, traveling ~30": a note drops the article)
         elif limit_number_after(tokens, i):
             named.add(i)
     return named if speeds - named else set()

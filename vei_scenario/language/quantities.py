@@ -23,6 +23,7 @@ import re
 from collections.abc import Callable
 from dataclasses import replace
 
+from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.lemmas import lemmas
@@ -66,7 +67,7 @@ GUESSES = frozenset(
 #: "I don't know", "I would guess", "I believe", "I'd estimate", "I suppose", "you know").
 OPINION_VERBS = frozenset(
     {"think", "reckon", "guess", "say", "believe", "estimate", "suppose", "know", "reckoned", "thought",
-     "guessed", "figure", "imagine", "bet", "expect", "recall", "remember", "mean"}
+     "guessed", "figure", "imagine", "bet", "expect", "recall", "remember", "mean", "dunno"}
 )  # fmt: skip
 #: Words between the speaker and the verb of opinion ("I would say", "I do not know", "I 'd guess").
 _OPINION_AUXILIARIES = frozenset({"would", "do", "did", "not", "'d", "should", "must", "'m"})
@@ -380,6 +381,17 @@ def other_measure(tokens: list[str], i: int) -> bool:
     return nxt in OTHER_MEASURES or (clock and not (i + 3 < len(tokens) and tokens[i + 3] in V.SPEED_UNITS))
 
 
+def of_a_total(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is the total a place in a series is counted out of ("run 3 of 6",
+    "session 4 of about 6", "lane 1 of 3"): "<number> of (about) <number>" says the one before is the
+    how-manyeth, and the number after "of" how many there are, no speed ("a speed of 40" has no number
+    before its "of")."""
+    k = i - 1
+    while k > 0 and (tokens[k] in APPROXIMATORS or tokens[k] in _HEDGE_WORDS):
+        k -= 1
+    return k >= 1 and tokens[k] == "of" and is_number(tokens[k - 1])
+
+
 #: Names of a change of speed in a crash, as reconstruction reports write them: "delta-v" (also "delta v",
 #: "dV") and the energy equivalent speed, "EES": how much speed the crash took, not a speed travelled.
 _CRASH_CHANGES = frozenset({"delta-v", "deltav", "dv", "d-v", "ees"})
@@ -592,7 +604,17 @@ def free_motorway_speed(tokens: list[str], i: int) -> bool:
     value = float(tokens[i])
     if not 50 <= value < _METRIC_MOTORWAY_KPH or not any(t in ("motorway", "motorways") for t in tokens):
         return False
-    return not any(t in _SLOW_TRAFFIC for t in tokens)
+    return not any(t in _SLOW_TRAFFIC and not _of_the_weather(t, nxt) for t, nxt in zip(tokens, [*tokens[1:], ""]))
+
+
+#: Words of the weather ("rain", "fog", "spray"): "heavy" said of one is how hard it falls, not how slow traffic is.
+_WEATHER_WORDS = frozenset(w for words in L.WEATHER.values() for w in words) | {"spray", "showers"}
+
+
+def _of_the_weather(word: str, nxt: str) -> bool:
+    """Whether ``word`` is "heavy" said of the weather word ``nxt`` after it ("heavy rain", "heavy
+    fog"): the weather, not heavy traffic."""
+    return word == "heavy" and nxt in _WEATHER_WORDS
 
 
 #: Roads only countries that sign km/h have, by their own names (the German Autobahn and Bundesstrasse,

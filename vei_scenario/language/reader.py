@@ -77,6 +77,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
+from vei_scenario.language.miles_english import said_in_miles_english
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
@@ -742,6 +743,8 @@ def _number(
             return "lanes", int(value), 2 if nxt != "-" else 3
     if i >= 3 and tokens[i - 1] == "of" and tokens[i - 3] in ("lane", "lanes"):
         return "skip", value, 1  # ("in lane 1 of 3": how many lanes, no speed)
+    if Q.of_a_total(tokens, i):  # ("Run 3 of about 6", "session 4 of 6": how many there are, no speed)
+        return "skip", value, 1
     prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
         tokens, i - 1
@@ -820,6 +823,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
     imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
     imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
+    written = re.findall(r"[a-z]+", plain_letters(text.lower()))  # (as written, before any is read as another)
+    imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
     narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
