@@ -49,6 +49,7 @@ from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PA
 from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.vocabulary import IN_LINE
 from vei_scenario.language.who import (
+    THINGS_FOR_VEHICLES,
     make_and_model,
     person_with_vehicle,
     travel_modes,
@@ -2265,7 +2266,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
         if _told(tokens, j):
             continue  # (one listening: "she told the Echo", "speaking to the Post")
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
-        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and _verb_of(nxt))
+        place = nxt in THINGS_FOR_VEHICLES  # ("out of the Engen garage": a place's brand, though "garage" is a verb)
+        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and not place and _verb_of(nxt))
         if ends and not (i and tokens[i - 1] in proper):
             out.append("car")
     return out

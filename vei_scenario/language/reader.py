@@ -53,6 +53,7 @@ from vei_scenario.language import (
     lane_moves,
     lane_to_front,
     motion,
+    named_riders,
     narrator_outside,
     narrator_ride,
     narrator_vehicle,
@@ -814,6 +815,9 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = Q.without_guesses(tokens, _MOTION_BEFORE_SPEED)  # ("going, I don't know, 40": going 40)
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
+    tokens = named_riders.named_riders(
+        tokens, text, proper, _kind_at, FUNCTION_WORDS.__contains__
+    )  # ("Priya, who was riding": a cyclist)
     tokens, dropped = discourse.resolve(tokens, _kind_at, _known, proper)  # (who is who; words out)
     tokens = whose_act.ridden_one(tokens, _kind_at)  # ("E-scooters are everywhere. A kid on one shot out")
     tokens = whose_act.the_rider(tokens, _kind_at)  # ("a cyclist ... the rider brakes": the cyclist)
