@@ -7,7 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from tests.reading_of import moves
+from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.reader import read
+from vei_scenario.language.rules_backend import layers_from_text
 
 
 def _behaviours(text: str) -> list[str]:
@@ -168,3 +171,95 @@ def test_one_of_two_cars_in_another_lane_moving_over_well_ahead_changes_lane():
     text = "Two cars were in the left lane; one of them swerved out into the right lane well ahead of us."
     moves = [b[0] for a in read(text).actors for b in a.behaviours]
     assert "change_lane" in moves and "cut_in" not in moves
+
+
+# A road user's act said with a verb the reader has no behaviour for, read by the structure around it
+# (own_way.py, motion.follows_with_nothing_named): a verb whose object is the road user itself ("wedged
+# itself into my lane", "forced its way into our lane", "poked its nose into my lane") moves it where
+# the verb goes; "following" said of a road user with nothing named that it follows ("a van following
+# at 2 s") follows the ego. Guards: the ego's own act, another road user as the object, a denial, "the
+# following" as a word of order, an act of its own besides.
+
+
+def _first_acts(text: str) -> list[str]:
+    return moves(text)[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A delivery lorry wedged itself into my lane at the last second.",
+        "On the ring road a taxi from the right lane forced its way into our lane.",
+        "I was doing 40 when a white pickup elbowed its way into my lane.",
+        "dashcam: silver estate in lane 2 poked its nose into my lane, I braked",
+        "The coach eased itself over into my lane without indicating.",
+    ],
+)
+def test_a_road_user_moving_itself_into_the_ego_lane_cuts_in(text: str) -> None:
+    assert _first_acts(text)[0] == "cut_in"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego at 50 km/h on a straight road, a hatchback following at 2 s.",
+        "I was at 30 mph and a Transit was following at about 1.5 seconds the whole way.",
+        "The ego travels at 80 km/h; a lorry is following about 20 m back.",
+        "log: host 70 km/h | trailing car following at 1.2 s | dry",
+    ],
+)
+def test_a_road_user_following_with_nothing_named_follows_the_ego(text: str) -> None:
+    layers = layers_from_text(text, 0)
+    follower = next(a for a in layers["adversaries"] if a["type"] != "pedestrian")
+    assert [node["behaviour"] for _, node in behaviour_nodes(follower["behaviour"])][:1] == ["follow_vehicle"]
+
+
+@pytest.mark.parametrize(
+    ("text", "old"),
+    [
+        # the ego's own act: "itself" is the ego, no road user moves
+        ("I squeezed myself into the left lane and a van kept going ahead of me.", "keep_going"),
+        # another road user as the object: the verb says what is done to it, not a move of the subject
+        ("A tow truck dragged a wreck into my lane.", "keep_going"),
+        # a denial: no move
+        ("A taxi in the right lane never forced its way into my lane, it stayed put.", None),
+    ],
+)
+def test_other_objects_and_denials_keep_their_reading(text: str, old: str | None) -> None:
+    acts = moves(text)
+    if old is None:
+        assert all("cut_in" not in a for a in acts)
+    else:
+        assert acts and acts[-1][0] == old
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # following named: what it follows is said, and read as before
+        "A cyclist was following a bus along the high street at 20 km/h.",
+        # an act of its own besides: that act, not a following
+        "A car following at 2 s suddenly braked hard.",
+        # "the following" is a word of order
+        "The following car overtook me on the left.",
+    ],
+)
+def test_following_with_its_own_object_or_act_keeps_its_reading(text: str) -> None:
+    acts = moves(text)
+    assert acts and acts[0][:1] != ["follow_vehicle"]
+
+
+def test_the_ego_following_is_no_road_users_act() -> None:
+    acts = moves("The ego is following at 2 s behind a lorry that brakes hard.")
+    assert acts == [["sudden_stop"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi from the left lane muscled its way in front of me.",
+        "A hatchback in the right lane squeezed itself in front of us at the lights.",
+    ],
+)
+def test_a_road_user_moving_itself_in_front_of_the_ego_from_a_lane_beside_cuts_in(text: str) -> None:
+    assert _first_acts(text)[0] == "cut_in"

@@ -25,6 +25,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.own_way import is_its_own_object
 
 #: Verbs (lemmas) of being somewhere or of going along: with "ahead of me" they say a position, no move.
 _BEING_OR_GOING_ALONG = frozenset(
@@ -140,6 +141,8 @@ def _cut_in_at(mentions: list, tokens: list[str], k: int) -> tuple[int, int, int
     j = _skip_manner(mentions, j)
     if j < len(mentions) and _plain_verb(mentions[j]):
         verb, j = j, _skip_manner(mentions, j + 1)
+    if j < len(mentions) and is_its_own_object(mentions[j], tokens):
+        j = _skip_manner(mentions, j + 1)  # ("muscled its way in front of me": the road user moves itself)
     if j >= len(mentions) or not _ends_in_front_of_the_ego(mentions, tokens, j):
         return None
     if not _a_move_between(tokens, lane_end, mentions[j].start):

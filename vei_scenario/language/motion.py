@@ -45,6 +45,7 @@ import re
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
 from vei_scenario.language.reading import ActorSpec
 from vei_scenario.language.settings import FOOT_CROSSINGS, negated
 from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
@@ -1266,7 +1267,7 @@ def _verb_into_a_lane(tokens: list[str], j: int, ego_lanes: set[str]) -> tuple[i
     unknown = not said and tokens[j].isalpha() and tokens[j].endswith(("s", "ed"))  # ("jinks": a verb by its place)
     if not (verbs or unknown) or verbs & {"be", "have", "do"} or tokens[j] in verbs or tokens[j].endswith("ing"):
         return None  # (no verb; a bare form or a participle: "lane" after them is where, not where to)
-    k = j + 1
+    k = past_its_own_object(tokens, j + 1)  # ("nosed its way into lane 2")
     while k < len(tokens) and tokens[k] in _ON_THE_WAY:
         k += 1
     if k >= len(tokens) or tokens[k] not in ("into", "onto"):
@@ -1299,8 +1300,8 @@ def into_another_lane(clauses: list, tokens: list[str]) -> list:
             if subject is None or any(x.slot == "behaviour" and x.start > subject.start for x in before):
                 continue  # (no road user, or one whose verb is read already)
             said = _verb_into_a_lane(tokens, j, ego_lanes)
-            if said is None:
-                continue
+            if said is None or negated(tokens, j):
+                continue  # (no move into a lane, or one denied: "never forced its way into my lane")
             end, ours = said
             move = ("cut_in" if ours else "change_lane", {})
             new = word_mention(subject, tokens, j, "behaviour", move)
@@ -1596,7 +1597,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(
-        passes_while_the_ego_yields(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens))
+        passes_while_the_ego_yields(
+            follows_with_nothing_named(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens), tokens)
+        )
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
     clauses = straight_across(clauses, tokens)
@@ -1749,6 +1752,38 @@ def follows_the_ego(clauses: list, tokens: list[str]) -> list:
                 kept.append(replace(m, slot="relation", value="behind"))
                 continue
             kept.append(m)
+        out.append((link, kept))
+    return out
+
+
+#: Words before "following" that make it a word of order or a noun's modifier ("the following car").
+_BEFORE_AN_ADJECTIVE = frozenset(("the", "a", "an", "this", "that", "our", "my"))
+
+
+def follows_with_nothing_named(clauses: list, tokens: list[str]) -> list:
+    """``clauses`` with a road user said to be following, with nothing named that it follows ("a
+    hatchback following at 2 s", "a lorry is following about 20 m back", "trailing car following at
+    1.2 s"), read as following the ego: "follow" is transitive, and where its object is left out it is
+    the one the telling is about, ahead of the follower. The road user is the clause's subject, not
+    the ego; anything else named after it (another road user, "a bus") is what it follows, read
+    elsewhere, and an act of its own in the clause ("following at 2 s, braked hard") is what it does,
+    not the following."""
+    out = []
+    for link, mentions in clauses:
+        kept = list(mentions)
+        for k, m in enumerate(mentions):
+            if m.slot != "relation" or not _a_following(m) or (m.start and tokens[m.start - 1] in _BEFORE_AN_ADJECTIVE):
+                continue
+            subject = _subject_before(mentions[:k])
+            if subject is None:
+                continue
+            after_subject = mentions[mentions.index(subject) + 1 :]
+            if any(x.slot == "behaviour" for x in after_subject) or any(
+                x.slot in ("actor", "pronoun") and x.value != "ego" for x in mentions[k + 1 :]
+            ):
+                continue
+            kept.insert(kept.index(m) + 1, replace(m, slot="behaviour", value=("follow_vehicle", {})))
+            break
         out.append((link, kept))
     return out
 
@@ -2506,7 +2541,7 @@ def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | 
         return None
     if tokens[j] in verbs and set(said) - {"VERB"}:
         return None  # (a bare form that is another word too: "right into my path" is where, no verb)
-    k = j + 1
+    k = past_its_own_object(tokens, j + 1)  # ("wedged itself into my lane", "forced its way into ours")
     while k < len(tokens) and tokens[k] in _ON_THE_WAY_IN:
         k += 1
     if tokens[k : k + 1] == ["from"]:  # ("swung from the right lane into mine": where it leaves)
@@ -2579,7 +2614,7 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
                 continue  # (a move of its own: "cut into my lane" is read already)
             if at is not None and at.slot == "behaviour" and at.words.split()[-1] in ("into", "onto"):
                 continue  # ("swerves into my lane": a lane change the reader places with where it starts)
-            if at is not None and negated(tokens, at.start):
+            if negated(tokens, j if at is None else at.start):
                 continue  # ("the rider does not enter the vehicle's lane": it stays where it is)
             before = [x for x in kept if x.start < j]
             subject = _subject_before(before)
@@ -2594,7 +2629,9 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
                 if verb.slot == "behaviour" and verb.value[0] == "cross_in_front":
                     break
                 cut = ("cross_in_front", {})
-            used = [x for x in kept if j < x.start < end and x.slot == "unknown_verb"]  # ("mine")
+            used = [  # ("mine"; "itself", "its way": the subject, not another road user)
+                x for x in kept if j < x.start < end and (x.slot == "unknown_verb" or x.words in REFLEXIVES)
+            ]
             if at is not None:
                 kept[kept.index(at)] = replace(at, slot="behaviour", value=cut)
             else:
