@@ -108,3 +108,22 @@ def test_a_forced_turn_from_the_lane_beside_the_ego_still_cuts_across_its_lane()
     [adv] = layers["adversaries"]
     assert _names(adv) == ["forced_turn"] and adv["spawn"]["relation"] == "left"
     assert b"RelativeTargetLane" in write_scenario(layers, "scenario").xosc
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "At the crossroads an oncoming car forced a right turn across my lane and ran the red light.",
+        "At the lights a van coming the other way forcefully turned right in front of me, straight through the red"
+        " light.",
+    ],
+)
+def test_a_turn_from_another_arm_that_runs_the_red_runs_it_along_the_turn(text, tmp_path):
+    """One that turns at the junction and runs the red doing so keeps its turn's route (the run takes no
+    straight-on route of its own from where it started): its way crosses the ego's path."""
+    layers = layers_from_text(text, 0)
+    [adv] = layers["adversaries"]
+    assert _names(adv) == ["forced_turn", "run_red_light"] and adv["spawn"]["relation"] == "junction_opposite"
+    assert write_scenario(layers, "scenario").xosc.count(b"<AssignRouteAction>") == 2  # (the ego's and its turn)
+    result = play_layers(layers, tmp_path)
+    assert played_problems(result, layers) == []

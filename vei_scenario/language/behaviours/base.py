@@ -100,6 +100,8 @@ class ActorContext:
     facing: str = "with"
     #: The actor's offset from its lane's centre at the start (m): a rider at the kerb edge.
     actor_offset_m: float = 0.0
+    #: An earlier behaviour of the actor has given it a route through the junction (a turn there).
+    routed: bool = False
 
     def on_another_arm(self) -> bool:
         """Whether the actor starts on another arm of the ego's junction or roundabout (one of the
