@@ -235,6 +235,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     _room_ahead_before_feature(ego, adversaries, kind)
     _turn_in_before_bend(ego, adversaries, kind, lanes)
     make_room_to_pull_out(ego, adversaries, lanes, kind == "roundabout")
+    make_room_to_overtake(ego, adversaries, kind)
     make_room_to_roll_up(ego, adversaries)
     if ego.get("distance_m") != start_m:
         retime_junction_runs(ego, adversaries, lanes, timed)
@@ -455,6 +456,32 @@ def make_room_to_pull_out(ego: dict, adversaries: list[dict], lanes: int = 1, ri
         t_actor = turn_into.time_to_join_s(actor_path, cfg, *_vehicle(adv["type"]))
         gap = max(value(cfg, turn_into.PARAMETERS, "arrival_gap_s"), 0.0)
         need = turn_into.ego_distance_at_set_off_m(ego_speed, t_actor, ego_path, gap) + PULL_OUT_MARGIN_M
+        if need > float(ego["distance_m"]):
+            ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
+
+
+def make_room_to_overtake(ego: dict, adversaries: list[dict], kind: str) -> None:
+    """The ego starts far enough before its junction or roundabout for a road user on its road that
+    overtakes it to be back in a lane ahead of it before the junction: by then the ego has driven as
+    far as the behaviours up to the end of the overtake take (:func:`behaviour_time_s`), and the
+    overtaker is its gap ahead of it. Why: a lane change still under way as the two reach the
+    junction runs on into the junction's roads, where the lane it goes to is not linked to its own.
+    Where the ego starts far enough back, nothing changes."""
+    if kind not in ("crossroad", "roundabout") or "distance_m" not in ego:
+        return
+    ego_speed = float(ego["speed_mps"])
+    for adv in adversaries:
+        if adv["spawn"]["relation"] not in ("behind", "left", "right", "ahead"):
+            continue  # (an oncoming one is placed ahead of the ego's meeting with it: _room_ahead_before_feature)
+        nodes = [node for _, node in behaviour_nodes(adv["behaviour"])]
+        names = [node["behaviour"] for node in nodes]
+        if "overtake" not in names:
+            continue
+        until = nodes[: names.index("overtake") + 1]
+        taken_s = sum(behaviour_time_s(n["behaviour"], n.get("config", {}), ego_speed) for n in until)
+        ahead_m = value(nodes[names.index("overtake")].get("config", {}), BEHAVIOURS["overtake"].PARAMETERS, "gap_m")
+        lengths = (TYPES["car"][0][0] + TYPES[adv["type"]][0][0]) / 2
+        need = ego_speed * taken_s + ahead_m + lengths + MEETING_CLEAR_OF_FEATURE_M
         if need > float(ego["distance_m"]):
             ego["distance_m"] = round(min(need, ARM_LENGTH_M - 20.0), 3)
 

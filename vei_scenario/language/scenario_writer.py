@@ -208,6 +208,9 @@ class _StoryBuilder:
             steps[0].actions.insert(0, xosc.ActivateControllerAction(lateral=False, longitudinal=False))
             self.controlled = False
         self.controlled = self.controlled or bool(activates)
+        self.ctx.routed = self.ctx.routed or any(
+            isinstance(a, xosc.AssignRouteAction) for st in steps for a in st.actions
+        )
         start = node.get("start", {})
         prev = after
         for i, step in enumerate(steps):

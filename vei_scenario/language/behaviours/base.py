@@ -100,6 +100,15 @@ class ActorContext:
     facing: str = "with"
     #: The actor's offset from its lane's centre at the start (m): a rider at the kerb edge.
     actor_offset_m: float = 0.0
+    #: An earlier behaviour of the actor has given it a route through the junction (a turn there).
+    routed: bool = False
+
+    def on_another_arm(self) -> bool:
+        """Whether the actor starts on another arm of the ego's junction or roundabout (one of the
+        ego's exits), not on the ego's road. Why: lane ids are a road's own, and the ego's lane is
+        no lane of that arm's; a lane change towards it would run on into the junction's roads,
+        whose lanes do not link to it."""
+        return self.actor_road in self.exits.values()
 
     def ego_to_junction_m(self) -> float:
         """The ego's distance to its junction entry (m), 0 on a map without one."""

@@ -2,7 +2,9 @@
 
 The actor drives ahead of the ego in the neighbouring lane (left of it for a right turn); shortly
 before the junction it cuts across the ego's lane over ``lane_change_s`` while slowing to
-``turn_speed_mps``, and turns at the junction (a route through the exit on that side).
+``turn_speed_mps``, and turns at the junction (a route through the exit on that side). One that comes
+up on another arm of the junction (the one opposite) has no lane of the ego's to cut into: its turn
+towards that exit is what crosses the ego's lane.
 """
 
 from __future__ import annotations
@@ -40,11 +42,13 @@ PROFILES = {
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     turn = str(cfg.get("turn", "right"))
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
-    actions = [
-        route_action(ctx, turn),
-        lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")),
-        speed_action(value(cfg, PARAMETERS, "turn_speed_mps"), rate=rate),
-    ]
+    actions = [route_action(ctx, turn), speed_action(value(cfg, PARAMETERS, "turn_speed_mps"), rate=rate)]
+    if ctx.on_another_arm():
+        # coming up to the junction on another arm, its turn itself crosses the ego's lane: it takes its
+        # route and slows for the turn from the start (the gap to the ego, measured along its heading,
+        # closes only once they have passed each other, after it would have driven through)
+        return [Step("forced_turn", actions)]
+    actions.insert(1, lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")))
     return [Step("forced_turn", actions, conditions=[Condition("ego_within", value(cfg, PARAMETERS, "gap_m"))])]
 
 

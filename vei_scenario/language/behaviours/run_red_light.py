@@ -31,7 +31,9 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
-    actions = [route_action(ctx, "straight", own_view=True), speed_action(ctx.actor_speed_mps)]
+    actions = [speed_action(ctx.actor_speed_mps)]
+    if not ctx.routed:  # (one an earlier behaviour turns at the junction runs the red along that turn)
+        actions.insert(0, route_action(ctx, "straight", own_view=True))
     return [Step("run_red_light", actions, hold_s=through_s(ctx))]
 
 
