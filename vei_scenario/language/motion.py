@@ -931,13 +931,15 @@ def compass_opposed(said: str) -> bool:
 _ACROSS_THE_ROAD = frozenset(("cross_in_front", "cut_in", "change_lane"))
 
 
-def _one_crossing(behaviours: list) -> list:
+def _one_crossing(behaviours: list, again: frozenset[str] = _ACROSS_THE_ROAD) -> list:
     """A walker's behaviours with the end of its crossing said again ("stepped off the kerb ... and
     he got across", "made it over", "got to the other side") read as the one crossing: a walker has
-    no lane to change, so a move across after its crossing is that crossing."""
+    no lane to change, so a move across after its crossing is that crossing. Of anyone else only the
+    crossing itself said again is the same one (``again``: "came out of the car park ... passed inches
+    from my bumper"); a rider's move into a lane after it is a move of its own."""
     out: list = []
     for b in behaviours:
-        if out and out[-1][0] == "cross_in_front" and b[0] in _ACROSS_THE_ROAD:
+        if out and out[-1][0] == "cross_in_front" and b[0] in again:
             continue
         out.append(b)
     return out
@@ -957,6 +959,8 @@ def one_path(spec: ActorSpec, said: str = "", across: str = "left") -> list:
     turn that crosses an oncoming path (:func:`turn_across_side`)."""
     if spec.kind == "pedestrian":
         spec.behaviours = _one_crossing(spec.behaviours)
+    else:
+        spec.behaviours = _one_crossing(spec.behaviours, frozenset(("cross_in_front",)))
     if spec.obstacle is not None and spec.behaviours[:1] and spec.behaviours[0][0] == "cut_out":
         # ("pulled out to pass a lorry parked in the lane": passing what it reveals is the cut-out)
         spec.behaviours = spec.behaviours[:1] + [b for b in spec.behaviours[1:] if b[0] != "overtake"]
@@ -2459,13 +2463,25 @@ def told_in_the_first_person(text: str, tokens: list[str]) -> bool:
 
 #: Adverbs that may stand between a verb and "in front of" ("passed right in front of us").
 _CLOSE = frozenset(("right", "just", "directly", "straight", "immediately"))
+#: Words of how near a road user passes, between the verb and where it passes ("passed approx 2 m in
+#: front of us", "passes inches from her bumper", "passed a couple of feet in front of my bonnet"):
+#: hedges, counts and units of length. How near it came is no object of the verb.
+_HOW_NEAR = frozenset(
+    ("approx", "approx.", "approximately", "about", "around", "roughly", "maybe", "only", "barely", "less", "than",
+     "a", "an", "couple", "few", "of", "one", "two", "three", "inch", "inches", "cm", "foot", "feet", "ft", "m",
+     "metre", "metres", "meter", "meters", "yard", "yards", "~")
+)  # fmt: skip
+#: The front parts of a vehicle: passing close by one ("inches from her bumper") is passing across its front.
+_FRONT_PARTS = frozenset(("front", "bumper", "bonnet", "hood", "nose", "grille"))
 
 
 def passing_in_front(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a verb of passing that has no object and goes on "in front of" the ego ("a
-    cyclist passed in front of us", "passes right in front of my bonnet") read as crossing the ego's
-    path: an overtake takes the one it passes as its object ("passed us"); passing in front of it,
-    a road user goes across where the ego is heading."""
+    cyclist passed in front of us", "passes right in front of my bonnet"), across its front ("passed
+    across the front of my car") or close by its front ("passes inches from her bumper") read as
+    crossing the ego's path: an overtake takes the one it passes as its object ("passed us"); passing
+    in front of it, a road user goes across where the ego is heading. How near it came may stand
+    between ("passed approx 2 m in front of us")."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
@@ -2473,8 +2489,11 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if not passes(m) or len(m.words.split()) != 1:
                 continue
             j = m.end
-            while j < len(tokens) and tokens[j] in _CLOSE:
+            while j < len(tokens) and (tokens[j] in _CLOSE | _HOW_NEAR or tokens[j].replace(".", "").isdigit()):
                 j += 1
+            if _across_the_ego(tokens, j) or _close_by_the_egos_front(tokens, j):
+                kept[k] = replace(m, value=("cross_in_front", {}))
+                continue
             if tokens[j : j + 3] != ["in", "front", "of"]:
                 continue
             rest = tokens[j + 3 : j + 7]
@@ -2484,6 +2503,13 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out
+
+
+def _close_by_the_egos_front(tokens: list[str], j: int) -> bool:
+    """Whether "from" or "past" the front of the ego's vehicle is said at ``tokens[j]`` ("from my
+    bumper", "past her bonnet", "from our front"): where a road user passing close by goes."""
+    said = tokens[j : j + 3]
+    return len(said) == 3 and said[0] in ("from", "past") and _ego_named(tokens, j + 1) and said[2] in _FRONT_PARTS
 
 
 #: What each kind of road user most often does where it meets the ego (the commonest behaviour of the
