@@ -75,6 +75,8 @@ FIRST = {
     "language_independent_z22.json": ((50, 50, 14, 46), "sealed for two rounds of reader work"),
     "language_independent_z23.json": ((50, 50, 7, 40), "sealed for a round of reader work"),
     "language_independent_z24.json": ((50, 50, 7, 43), "sealed for a round of reader work"),
+    "language_independent_z25.json": ((50, 50, 17, 48), "sealed for a round of reader work"),
+    "language_independent_z26.json": ((50, 50, 15, 48), "sealed for a round of reader work"),
 }
 
 

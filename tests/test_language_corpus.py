@@ -40,7 +40,7 @@ def test_at_least_nine_in_ten_descriptions_are_understood_and_faithful(corpus):
 #: insurance and radio narratives, long stories, lists, learners' English, typos). The figures first
 #: measured on each, before the reader was changed for it, are in benchmarks/language_corpus.py (FIRST;
 #: ``--all`` prints them beside today's); G, J, K, N, O, P, Q, T, U, V, W, X, Y and Z3
-#: to Z24 were kept sealed until the reader's last change and measured after it. The floors are the figures
+#: to Z26 were kept sealed until the reader's last change and measured after it. The floors are the figures
 #: measured last:
 #: (understood, faithful).
 INDEPENDENT = {
@@ -56,7 +56,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_j.json": (45, 44),
     ROOT / "tests" / "data" / "language_independent_k.json": (45, 41),
     ROOT / "tests" / "data" / "language_independent_l.json": (50, 47),
-    ROOT / "tests" / "data" / "language_independent_m.json": (50, 43),
+    ROOT / "tests" / "data" / "language_independent_m.json": (50, 44),
     ROOT / "tests" / "data" / "language_independent_n.json": (45, 34),
     ROOT / "tests" / "data" / "language_independent_o.json": (45, 28),
     ROOT / "tests" / "data" / "language_independent_p.json": (45, 36),
@@ -71,7 +71,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_y.json": (50, 36),
     ROOT / "tests" / "data" / "language_independent_z3.json": (50, 22),
     ROOT / "tests" / "data" / "language_independent_z4.json": (50, 16),
-    ROOT / "tests" / "data" / "language_independent_z5.json": (50, 22),
+    ROOT / "tests" / "data" / "language_independent_z5.json": (50, 23),
     ROOT / "tests" / "data" / "language_independent_z6.json": (50, 26),
     ROOT / "tests" / "data" / "language_independent_z7.json": (50, 17),
     ROOT / "tests" / "data" / "language_independent_z8.json": (50, 15),
@@ -83,14 +83,16 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z14.json": (50, 36),
     ROOT / "tests" / "data" / "language_independent_z15.json": (50, 22),
     ROOT / "tests" / "data" / "language_independent_z16.json": (50, 19),
-    ROOT / "tests" / "data" / "language_independent_z17.json": (50, 10),
-    ROOT / "tests" / "data" / "language_independent_z18.json": (50, 16),
+    ROOT / "tests" / "data" / "language_independent_z17.json": (50, 12),
+    ROOT / "tests" / "data" / "language_independent_z18.json": (50, 17),
     ROOT / "tests" / "data" / "language_independent_z19.json": (50, 3),
-    ROOT / "tests" / "data" / "language_independent_z20.json": (50, 29),
-    ROOT / "tests" / "data" / "language_independent_z21.json": (50, 11),
+    ROOT / "tests" / "data" / "language_independent_z20.json": (50, 30),
+    ROOT / "tests" / "data" / "language_independent_z21.json": (50, 12),
     ROOT / "tests" / "data" / "language_independent_z22.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z23.json": (50, 7),
     ROOT / "tests" / "data" / "language_independent_z24.json": (50, 7),
+    ROOT / "tests" / "data" / "language_independent_z25.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z26.json": (50, 15),
 }
 
 
