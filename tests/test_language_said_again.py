@@ -11,6 +11,8 @@ import pytest
 
 from tests.reading_of import kinds
 from vei_scenario.language.reader import read
+from vei_scenario.language.reading import NotUnderstood
+from vei_scenario.language.rules_backend import layers_from_text
 
 
 @pytest.mark.parametrize(
@@ -142,3 +144,11 @@ def test_a_person_word_that_ends_the_text_is_read_without_error() -> None:
     """ "... the one-way fella" ends the text: what follows the person's word is asked for past the
     last word, and is nothing (an ojek, a motorbike taxi, is the road user)."""
     assert kinds("ojek against the one-way fella") == ["car"]
+
+
+@pytest.mark.parametrize("text", ["Van:", ": cyclist :", "x: van :"])
+def test_a_label_that_ends_the_text_is_refused_not_an_error(text: str) -> None:
+    """A road user's label whose colon is the last word has no value after it to read: the text names
+    no act, so it is refused like any other, not an IndexError."""
+    with pytest.raises(NotUnderstood):
+        layers_from_text(text, 0)

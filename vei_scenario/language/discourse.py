@@ -1512,7 +1512,7 @@ def _field_names(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             j = i + found[1] + 1
             value = tokens[j] if j < len(tokens) else ""
             said = value.replace(".", "").isdigit() or (
-                value not in DETERMINERS and known(tokens, j) and kind_at(tokens, j) is None
+                value not in DETERMINERS and j < len(tokens) and known(tokens, j) and kind_at(tokens, j) is None
             )
             if said:
                 named = found[0] in seen or (tokens[i + found[1] - 1] in _ANY_ROAD_USER and seen - {"ego"})

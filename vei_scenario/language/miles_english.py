@@ -1,14 +1,12 @@
 """The English a text is written in, where it tells the unit of a bare speed ("doing about 30").
 
 Why: a writer who gives a speed with no unit gives it in the unit of their road signs, and says far
-more often which English they speak than which unit they mean. British and American English have
-words for the road and what is on it that the Englishes of countries signing km/h (Australia, New
-Zealand, Ireland, India, Canada) do not use: the British "pavement" is their "footpath" (the American
-"pavement" is the road's surface, in a country of miles all the same), the British "lorry" is their
-"truck" (but British test engineers who say them give km/h,
-so they decide nothing), "quid" is British money, a "bridleway" is a British right of way, and pelican, puffin and
-toucan crossings are British signals. A text that uses one is set where miles per hour are signed.
-Ireland says "lorry" too and signs km/h; its police, the Gardaí, say so first.
+more often which English they speak than which unit they mean. Some words of the road and of daily
+life are used only where miles per hour are signed: "quid" is British money, a "bridleway" is a
+British right of way, and pelican, puffin and toucan crossings are British signals. A text that uses
+one is set where miles per hour are signed. Commoner British words ("pavement", "lorry") are not
+used: British test engineers write them and give their speeds in km/h. Ireland says British words
+too and signs km/h; its police, the Gardaí, say so first.
 
 Only the unit of a bare speed is read from here, and only where the text states no unit of its own
 (:func:`vei_scenario.language.quantities.carried_unit` asks that first).
@@ -27,7 +25,7 @@ _IRISH_POLICE = frozenset({"garda", "gardai", "gardaí"})
 
 def said_in_miles_english(tokens: list[str]) -> bool:
     """Whether the words ``tokens`` (lowercased) are British or American English by a word of the road
-    only that English uses ("along the pavement", "a lorry", "fifty quid", "the pelican crossing"), and
+    only that English uses ("fifty quid", "along the bridleway", "the pelican crossing"), and
     not set in Ireland ("the gardai"). A pelican that is a bird is none: only a crossing's name counts."""
     if any(t in _IRISH_POLICE for t in tokens):
         return False

@@ -48,7 +48,7 @@ from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
 from vei_scenario.language.reading import ActorSpec
 from vei_scenario.language.settings import FOOT_CROSSINGS, negated
-from vei_scenario.language.sides import OFF_ROAD_PLACES, stated_side
+from vei_scenario.language.sides import OFF_ROAD_PLACES, VEHICLE_PARTS, stated_side
 from vei_scenario.language.word_mention import word_mention
 
 #: Behaviours that, said with running the red, are the manner of that run.
@@ -1764,14 +1764,31 @@ def follows_the_ego(clauses: list, tokens: list[str]) -> list:
 _BEFORE_AN_ADJECTIVE = frozenset(("the", "a", "an", "this", "that", "our", "my"))
 
 
+#: Slots of a road user's own act in a clause: what it does besides following ("stopped", "turned right").
+_ACTS = frozenset(("behaviour", "stationary", "turn"))
+
+
+def _has_object(tokens: list[str], end: int) -> bool:
+    """Whether "following" ending before ``end`` has an object of its own: a determiner or a noun right
+    after it ("following the satnav", "following directions"). Then it follows that, not the ego."""
+    nxt = tokens[end] if end < len(tokens) else ""
+    return nxt in _OBJECT_OPENERS or (set(lemmas(nxt)) == {"NOUN"} and nxt not in _PRONOUNS)
+
+
+#: Object pronouns: "following me" follows the one the telling is about.
+_PRONOUNS = frozenset(("me", "us", "you", "him", "her", "them", "it"))
+#: Words that open an object noun phrase.
+_OBJECT_OPENERS = frozenset(("the", "a", "an", "its", "his", "her", "their", "my", "our", "your", "this", "that"))
+
+
 def follows_with_nothing_named(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user said to be following, with nothing named that it follows ("a
     hatchback following at 2 s", "a lorry is following about 20 m back", "trailing car following at
     1.2 s"), read as following the ego: "follow" is transitive, and where its object is left out it is
     the one the telling is about, ahead of the follower. The road user is the clause's subject, not
     the ego; anything else named after it (another road user, "a bus") is what it follows, read
-    elsewhere, and an act of its own in the clause ("following at 2 s, braked hard") is what it does,
-    not the following."""
+    elsewhere, and an act of its own in the clause ("following at 2 s, braked hard", a stop or a turn) is
+    what it does, not the following; nor does one following something named ("following the satnav")."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
@@ -1779,10 +1796,10 @@ def follows_with_nothing_named(clauses: list, tokens: list[str]) -> list:
             if m.slot != "relation" or not _a_following(m) or (m.start and tokens[m.start - 1] in _BEFORE_AN_ADJECTIVE):
                 continue
             subject = _subject_before(mentions[:k])
-            if subject is None:
+            if subject is None or _has_object(tokens, m.end):
                 continue
             after_subject = mentions[mentions.index(subject) + 1 :]
-            if any(x.slot == "behaviour" for x in after_subject) or any(
+            if any(x.slot in _ACTS for x in after_subject) or any(
                 x.slot in ("actor", "pronoun") and x.value != "ego" for x in mentions[k + 1 :]
             ):
                 continue
@@ -2471,6 +2488,8 @@ _HOW_NEAR = frozenset(
      "a", "an", "couple", "few", "of", "one", "two", "three", "inch", "inches", "cm", "foot", "feet", "ft", "m",
      "metre", "metres", "meter", "meters", "yard", "yards", "~")
 )  # fmt: skip
+#: Sides said after a close pass ("on the outside"): it went along the ego's side, an overtake.
+_ALONG_A_SIDE = frozenset(("outside", "inside", "offside", "nearside"))
 #: The front parts of a vehicle: passing close by one ("inches from her bumper") is passing across its front.
 _FRONT_PARTS = frozenset(("front", "bumper", "bonnet", "hood", "nose", "grille"))
 
@@ -2491,7 +2510,10 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             j = m.end
             while j < len(tokens) and (tokens[j] in _CLOSE | _HOW_NEAR or tokens[j].replace(".", "").isdigit()):
                 j += 1
-            if _across_the_ego(tokens, j) or _close_by_the_egos_front(tokens, j):
+            overtakes_too = any(
+                passes(x) and x is not m and abs(x.start - m.start) < 12 for _, xs in clauses for x in xs
+            )
+            if _across_the_ego(tokens, j) or (not overtakes_too and _close_by_the_egos_front(tokens, j)):
                 kept[k] = replace(m, value=("cross_in_front", {}))
                 continue
             if tokens[j : j + 3] != ["in", "front", "of"]:
@@ -2507,9 +2529,17 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
 
 def _close_by_the_egos_front(tokens: list[str], j: int) -> bool:
     """Whether "from" or "past" the front of the ego's vehicle is said at ``tokens[j]`` ("from my
-    bumper", "past her bonnet", "from our front"): where a road user passing close by goes."""
+    bumper", "past her bonnet", "from our front"): where a road user passing close by goes. Not a part
+    of the front's ("my front wheel", by the side), nor one said along a side ("from my bumper on the
+    outside"), nor beside an overtake said with it (the caller): those pass along the ego's side."""
     said = tokens[j : j + 3]
-    return len(said) == 3 and said[0] in ("from", "past") and _ego_named(tokens, j + 1) and said[2] in _FRONT_PARTS
+    if len(said) < 3 or said[0] not in ("from", "past") or not _ego_named(tokens, j + 1) or said[2] not in _FRONT_PARTS:
+        return False
+    return (
+        tokens[j + 3 : j + 4] == []
+        or tokens[j + 3] not in VEHICLE_PARTS
+        and not set(tokens[j + 3 : j + 7]) & _ALONG_A_SIDE
+    )
 
 
 #: What each kind of road user most often does where it meets the ego (the commonest behaviour of the

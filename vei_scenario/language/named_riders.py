@@ -27,7 +27,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.discourse import DETERMINERS
-from vei_scenario.language.ego import lemma_in
+from vei_scenario.language.ego import VEHICLES, lemma_in
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import MOTOR_TWO_WHEELERS, SCOOTER_OPERATORS, WALKER_PACED
 from vei_scenario.language.narrator_outside import ON_FOOT
@@ -48,9 +48,8 @@ _NOUNS = {
     "car": ["motorcyclist"],
     "pedestrian": ["pedestrian"],
 }
-#: Kinds of motor vehicle: a named rider or walker is a road user beside one (with none, "Zara was riding
-#: in the cycle lane when a man stepped off the kerb", the named rider is the one the story is told from).
-_MOTOR = frozenset({"car", "van", "truck"})
+#: Who a passenger rides with ("riding with me").
+_COMPANIONS = frozenset({"me", "us", "him", "her", "them", "you"})
 #: Kinds a person rides.
 _RIDDEN = frozenset({"bicycle", "e-scooter"})
 #: Words between a name and its verb that only help the verb ("was riding", "had been walking", "who was").
@@ -156,14 +155,35 @@ def _ride_of(
     if k is None:
         return None
     if lemma_in(tokens[k], WALKING_VERBS):
-        return "pedestrian", None
+        pressed = lemma_in(tokens[k], frozenset({"step"})) and tokens[k + 1 : k + 2] == ["on"]
+        return None if pressed else ("pedestrian", None)  # ("stepped on the brake": a foot on a pedal)
     kind = next((kind for lemma, kind in RIDING_VERBS.items() if lemma_in(tokens[k], frozenset({lemma}))), "")
     if kind == "":
         return None
     if _something_ridden(tokens, k + 1, kind_at):
         ride = None if named else _ridden_at(tokens, k + 1, kind_at)  # ("rode his bike": one road user)
         return (ride[0], (k + 1, ride[1])) if ride else None  # (not "rode her pony", "rode the bus")
+    if kind is None and _aboard_or_object(tokens, k + 1, kind_at):
+        return None
     return kind or text_kind, None
+
+
+def _aboard_or_object(tokens: list[str], k: int, kind_at: KindAt) -> bool:
+    """Whether a bare "ride" at ``k - 1`` is said of a passenger or takes an object that is no vehicle:
+    a motor vehicle or a companion named in its clause ("riding along in his taxi", "riding with me"), or a
+    determiner's noun right after it ("riding the clutch"). Why: only "ride" with nothing ridden named
+    says a bike or a scooter; riding in a car or riding a pedal is no road user of its own."""
+    if k + 1 < len(tokens) and tokens[k] in DETERMINERS and tokens[k + 1] not in SCOOTER_OPERATORS:
+        return True
+    for j in range(k, min(k + 6, len(tokens))):
+        if tokens[j] in _CLAUSE_OPENERS:
+            return False
+        if tokens[j] == "with" and tokens[j + 1 : j + 2] and tokens[j + 1] in _COMPANIONS:
+            return True  # ("riding with me": a passenger beside the writer)
+        found = kind_at(tokens, j)
+        if found is not None and found[0] in VEHICLES:
+            return True
+    return False
 
 
 def _text_kind(tokens: list[str], kind_at: KindAt) -> str:
@@ -216,7 +236,9 @@ def named_riders(
     cyclist rode off"); the vehicle's phrase said with it goes ("a boy rode his bike", "off his
     e-scooter"). A name first said where it does neither keeps its reading everywhere: its later
     mentions are the person the passes before read ("Kyle Bradshaw was riding an e-scooter ... Kyle")."""
-    motor = any((found := kind_at(tokens, i)) and found[0] in _MOTOR for i in range(len(tokens)))
+    # (a named rider or walker is a road user beside a motor vehicle; with none, "Zara was riding in the
+    # cycle lane when a man stepped off the kerb", the named rider is the one the story is told from)
+    motor = any((found := kind_at(tokens, i)) and found[0] in VEHICLES for i in range(len(tokens)))
     names = _names(text, proper, function_word) - TITLES if motor else frozenset()
     text_kind = _text_kind(tokens, kind_at)
     said: dict[str, str] = {}  # (each word of a name read as a road user, and its kind)

@@ -19,6 +19,8 @@ from dataclasses import replace
 
 #: How far (tokens) after the verb its object or the "by" phrase's noun may start ("by a delivery van").
 _OBJECT_REACH = 4
+#: Slots of another verb: an object is not looked for past one.
+_ACTS = frozenset(("behaviour", "stationary", "turn", "intent", "unknown_verb"))
 #: Slots that name someone who can rear-end or be rear-ended.
 _PARTIES = frozenset(("actor", "pronoun"))
 
@@ -33,16 +35,18 @@ def _party_after(mentions: list, k: int) -> int | None:
     end = mentions[k].end + (1 if mentions[k].next_ == "by" else 0)
     for j in range(k + 1, len(mentions)):
         x = mentions[j]
-        if x.start > end + _OBJECT_REACH:
-            return None
+        if x.start > end + _OBJECT_REACH or x.slot in _ACTS:
+            return None  # (past another verb: "the taxi I rear-ended had stopped for a cat")
         if x.slot in _PARTIES:
             return j
     return None
 
 
 def _party_before(mentions: list, k: int) -> int | None:
-    """The index of the subject of verb ``mentions[k]``: the nearest one named before it in its clause."""
-    return next((j for j in range(k - 1, -1, -1) if mentions[j].slot in _PARTIES), None)
+    """The index of the subject of verb ``mentions[k]``: the nearest one named before it in its clause
+    that is not the object of a place ("the van ahead of me was rear-ended": the van, not "me")."""
+    placed = lambda j: j > 0 and mentions[j - 1].slot == "relation" and mentions[j].start - mentions[j - 1].end <= 1  # noqa: E731
+    return next((j for j in range(k - 1, -1, -1) if mentions[j].slot in _PARTIES and not placed(j)), None)
 
 
 def _opens_a_sentence(mentions: list) -> bool:

@@ -694,6 +694,8 @@ _KERB_SIDE_PREPOSITIONS = frozenset({"on", "from", "off", "up"})
 _ALONG = frozenset({"on", "up", "down", "along", "by", "past"})
 #: Prepositions of going up to and past the ego along its side: said of one that comes from behind.
 _FROM_BEHIND = frozenset({"up", "past"})
+#: Verbs whose "up" is coming to a stop, not coming up from behind ("pulled up", "drew up", "parked up").
+_STOPPING_WITH_UP = frozenset({"pull", "draw", "park", "stop", "wait", "line", "fetch"})
 #: Words after "the inside" that make it a noun phrase of its own: "the inside of the bend" is no side.
 _OF_A_PLACE = frozenset({"bend", "curve", "corner", "turn", "roundabout", "car", "van", "vehicle", "bus", "cab"})
 
@@ -736,10 +738,13 @@ _OBJECT_WORDS = frozenset({"me", "us", "him", "her", "them", "it", "ego", "car",
 def _particle_before(tokens: list[str], i: int) -> bool:
     """Whether "up" or "past" ends the verb before token ``i``, right before it or before the verb's
     object ("came up on my inside", "went past me on the outside", "shot past the ego on the inside");
-    never across a clause ("up ahead, on the inside")."""
+    never across a clause ("up ahead, on the inside"), nor the "up" of stopping ("pulled up on the
+    nearside", "parked up", "broken down up on the verge"), which says where one stands, not whence."""
     for k in range(i - 1, max(-1, i - 5), -1):
         if tokens[k] in _FROM_BEHIND:
-            return True
+            before = tokens[k - 1] if k else ""
+            stops = before == "down" or bool(set(lemmas(before).get("VERB", ())) & _STOPPING_WITH_UP)
+            return not (tokens[k] == "up" and stops)
         if tokens[k] not in _OBJECT_WORDS and tokens[k] not in _DETERMINERS:
             return False
     return False
