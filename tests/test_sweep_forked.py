@@ -3,6 +3,7 @@ order, a worker's exception raised here, a dead or silent worker one line, no wo
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 import signal
 import subprocess
@@ -31,9 +32,16 @@ def test_results_come_back_in_task_order_from_every_worker(monkeypatch, count, w
     when a ticket carries several tasks), the progress counted once per task; the workers reaped."""
     monkeypatch.setattr(forked, "_MAX_TICKETS", tickets)
     seen: list[int] = []
+    # (with enough tasks, each process holds its first until all have one: on a loaded machine a worker
+    # forked last could otherwise find the tickets gone; the fork context's barrier is shared by forks)
+    barrier = multiprocessing.get_context("fork").Barrier(workers) if count >= 20 else None
+    started: set[int] = set()
 
     def task(i: int) -> tuple[int, int, list[float]]:
-        time.sleep(0.002)  # (long enough that every worker takes tickets)
+        if barrier is not None and os.getpid() not in started:
+            started.add(os.getpid())
+            barrier.wait(timeout=60)
+        time.sleep(0.002)
         return i, os.getpid(), [i * 0.5, -float(i)]
 
     out = forked.run_forked(task, count, workers, seen.append)
