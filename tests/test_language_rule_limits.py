@@ -44,7 +44,7 @@ def test_a_named_driver_or_passenger_is_no_rider_or_walker(text: str) -> None:
     ],
 )
 def test_following_something_named_is_not_following_the_ego(text: str, acts: list[str]) -> None:
-    """"Following" with an object of its own, or beside a stop or a turn of its own, is not following
+    """ "Following" with an object of its own, or beside a stop or a turn of its own, is not following
     the ego; with none, or with the ego as its object, it is."""
     assert _read(text)[0][2] == acts
 

@@ -46,6 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
+from vei_scenario.language.quantities import OBJECT_PRONOUNS
 from vei_scenario.language.reading import ActorSpec
 from vei_scenario.language.settings import FOOT_CROSSINGS, negated
 from vei_scenario.language.sides import OFF_ROAD_PLACES, VEHICLE_PARTS, stated_side
@@ -1770,13 +1771,12 @@ _ACTS = frozenset(("behaviour", "stationary", "turn"))
 
 def _has_object(tokens: list[str], end: int) -> bool:
     """Whether "following" ending before ``end`` has an object of its own: a determiner or a noun right
-    after it ("following the satnav", "following directions"). Then it follows that, not the ego."""
+    after it ("following the satnav", "following directions"). Then it follows that, not the ego; a
+    pronoun ("following me") is the one the telling is about."""
     nxt = tokens[end] if end < len(tokens) else ""
-    return nxt in _OBJECT_OPENERS or (set(lemmas(nxt)) == {"NOUN"} and nxt not in _PRONOUNS)
+    return nxt in _OBJECT_OPENERS or (set(lemmas(nxt)) == {"NOUN"} and nxt not in OBJECT_PRONOUNS)
 
 
-#: Object pronouns: "following me" follows the one the telling is about.
-_PRONOUNS = frozenset(("me", "us", "you", "him", "her", "them", "it"))
 #: Words that open an object noun phrase.
 _OBJECT_OPENERS = frozenset(("the", "a", "an", "its", "his", "her", "their", "my", "our", "your", "this", "that"))
 

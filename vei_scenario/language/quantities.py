@@ -206,7 +206,7 @@ _BE = frozenset({"is", "was", "are", "were", "am", "be"})
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 #: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
 _CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
-_OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
+OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
 #: A car's length (m), the unit of "two car lengths behind".
@@ -820,10 +820,10 @@ def owners(
         return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
     if tokens[j] in _MOTION and j and tokens[j - 1] == "both":  # "... are both doing 50 km/h"
         j -= 1
-    elif tokens[j] in _MOTION and tokens[j - 1] in _OBJECT_PRONOUNS:  # (with a unit or bare: "doing 70")
+    elif tokens[j] in _MOTION and tokens[j - 1] in OBJECT_PRONOUNS:  # (with a unit or bare: "doing 70")
         passer = _subject_before(tokens, j - 2, mention_ending_at)  # ("a lorry went past us doing 70 km/h")
         return (passer,) if passer is not None else ()
-    elif tokens[j] in _MOTION and unit and tokens[j - 1] not in _OBJECT_PRONOUNS:
+    elif tokens[j] in _MOTION and unit and tokens[j - 1] not in OBJECT_PRONOUNS:
         # "the ego drives at 40 km/h", "a tractor doing 15 mph": its subject's ("overtakes me doing 18 mph": not mine)
         k = j - 1
         while k > 0 and tokens[k] in _AUXILIARIES:  # ("the van was going 40 mph", "I was doing 50")
