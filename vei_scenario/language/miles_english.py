@@ -6,13 +6,18 @@ life are used only where miles per hour are signed: "quid" is British money, a "
 British right of way, and pelican, puffin and toucan crossings are British signals. A text that uses
 one is set where miles per hour are signed. Commoner British words ("pavement", "lorry") are not
 used: British test engineers write them and give their speeds in km/h. Ireland says British words
-too and signs km/h; its police, the Gardaí, say so first.
+too and signs km/h; its police, the Gardaí, say so first. A town road called by its limit's number
+alone ("doing 40 in a 30", "it's a twenty") is a British name too: where miles are signed, 20 and 30 are
+the limits of towns and a road is called by them; where km/h is signed, towns are signed 50 and a 30 is
+said as a zone ("a 30 zone"), which is said in both and tells nothing.
 
 Only the unit of a bare speed is read from here, and only where the text states no unit of its own
 (:func:`vei_scenario.language.quantities.carried_unit` asks that first).
 """
 
 from __future__ import annotations
+
+from vei_scenario.language.lemmas import lemmas
 
 #: Words only British or American English use of the road and its traffic (see the module's docstring).
 MILES_ENGLISH_WORDS = frozenset({"quid", "bridleway", "bridleways"})
@@ -32,3 +37,28 @@ def said_in_miles_english(tokens: list[str]) -> bool:
     if any(t in MILES_ENGLISH_WORDS for t in tokens):
         return True
     return any(t in _CROSSING_NAMES and nxt in _CROSSINGS for t, nxt in zip(tokens, tokens[1:]))
+
+
+#: The town limits of Britain, by which a road is called ("a 30", "the twenty"): in figures and in words.
+_TOWN_LIMITS = frozenset({"20", "30", "twenty", "thirty"})
+#: Words before a road called by its limit: where one is ("in a 30") or what a road is ("it's a twenty").
+_BEFORE_ROAD = frozenset({"in", "through", "is", "'s", "was"})
+#: Words after which nothing more is said of the number: its phrase ends ("in a 30, so", "in the 30 when").
+_PHRASE_ENDS = frozenset(
+    {"", ".", ",", ";", ":", "!", "?", ")", "-", "and", "but", "so", "when", "while", "as", "then", "with", "at"}
+)
+
+
+def road_called_by_its_limit(tokens: list[str]) -> bool:
+    """Whether a road is called by its town limit's number alone in ``tokens`` (lowercased): "in a 30",
+    "in the 30 last night", "it's a twenty," (see the module's docstring). Not where the number counts
+    or measures the noun after it ("in a 30 zone", "in the 30 seconds", "a 20 tonne truck"): the word
+    after it ends the phrase or is no noun ("last", "yesterday" may be one, and are said as adverbs)."""
+    for k in range(1, len(tokens) - 1):
+        if tokens[k] not in ("a", "the") or tokens[k - 1] not in _BEFORE_ROAD or tokens[k + 1] not in _TOWN_LIMITS:
+            continue
+        nxt = tokens[k + 2] if k + 2 < len(tokens) else ""
+        said = lemmas(nxt)
+        if nxt in _PHRASE_ENDS or ("NOUN" not in said and said) or "ADV" in said:
+            return True
+    return False

@@ -452,9 +452,13 @@ def number_speed(tokens: list[str], i: int) -> bool:
 
 #: Parts of the day, and words of the day said of the story, beside which a bare hour is a time ("around
 #: 7 this morning", "at 9 last night", "Today morning, around 7", "tonight around 10").
+#: The light of a time of day, which the lexicon reads as one too: said with no hour ("in the dark, at 8").
+_LIGHT = frozenset({"dark", "darkness", "dusky", "daylight", "daytime"})
+#: Parts of the day, by every one-word name the lexicon reads as a time ("arvo", "lunchtime", "sundown").
 _PARTS_OF_DAY = frozenset(
     {"morning", "mornings", "afternoon", "evening", "evenings", "night", "tonight", "today", "yesterday", "dawn",
      "dusk", "midnight", "noon", "midday", "am", "pm", "a.m.", "p.m.", "forenoon", "daybreak", "sunrise", "sunset"}
+    | {name for names in L.TIMES.values() for name in names if name.isalpha() and name not in _LIGHT}
 )  # fmt: skip
 #: Words that say a time before an hour ("at 7", "around 7", "by 8", "after 9", "till 10").
 _BEFORE_HOUR = frozenset({"at", "around", "about", "approx", "approximately", "by", "after", "before", "till",

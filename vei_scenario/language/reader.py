@@ -76,9 +76,10 @@ from vei_scenario.language import quantities as Q
 from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
+from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
-from vei_scenario.language.miles_english import said_in_miles_english
+from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
@@ -829,6 +830,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
     written = re.findall(r"[a-z]+", plain_letters(text.lower()))  # (as written, before any is read as another)
     imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
+    imperial = imperial or road_called_by_its_limit(tokens)  # ("doing 40 in a 30": a British town road)
     narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
@@ -2016,7 +2018,8 @@ def _read(text: str) -> Reading:
                     if discourse.others_named(m.words, who == "ego" and ego_is_a_person, group or last_group):
                         who = (group or last_group)[-1]  # ("I was at 40, they were doing 20": the group, not us)
                     if m.words in ("he", "she"):  # a person's pronoun names the same one all through a story
-                        if who == "ego" and ego_is_a_person and actors and m.words not in bound:
+                        narrator = ego_is_a_person or _i_in_its_sentence(scanned, m.start)  # ("he was ... and I")
+                        if who == "ego" and narrator and actors and m.words not in bound:
                             who = actors[-1]  # (the narrator is "I": "he" is someone else)
                         who = bound.setdefault(m.words, who)  # ("the driver said she ... She braked")
                     person = actors == [who] and who.kind in (*VULNERABLE, UNKNOWN_KIND)  # (him, her: no vehicle)
@@ -2284,7 +2287,8 @@ def _read(text: str) -> Reading:
                     passive.append(m)  # said of the ego in the passive: the doer follows after "by"
                     prev = m
                     continue
-                if prev is not None and prev.slot == "actor" and named and named[-1][1] != "subject":
+                placed_before = _placed_object_before(mentions, k)
+                if prev is not None and (prev.slot == "actor" or placed_before) and named and named[-1][1] != "subject":
                     crossing_past = (  # ("comes out from in front of the bus crossing": the rider crosses)
                         m.slot == "behaviour"
                         and m.value[0] == "cross_in_front"
@@ -3871,6 +3875,31 @@ def _ego_participle(prev, m, nxt) -> bool:
         and m.words in MOTION_PARTICIPLES and nxt is not None and nxt.slot == "speed"
         and nxt.start - m.end <= (1 if nxt.prev == "at" else 0)
     )  # fmt: skip
+
+
+def _i_in_its_sentence(tokens: list[str], i: int) -> bool:
+    """Whether the narrator says "I" in the sentence of token ``i`` ("Passed a rider, he was pootling along
+    and I gave him room"): a "he" or "she" beside the narrator's "I" is someone else, even before the
+    narrator has said "I"; a story about "Sam" that quotes him elsewhere tells nothing of this one."""
+    return "i" in tokens[sentence_start(tokens, i) : sentence_stop(tokens, i)]
+
+
+#: What places a road user, said right after it ("a cyclist 45 m ahead"): how far, and which way from the ego.
+_PLACEMENTS = frozenset({"distance", "relation"})
+
+
+def _placed_object_before(mentions, k: int) -> bool:
+    """Whether the mention at ``k`` follows a road user and the place said of it, with no verb between ("I
+    notice a cyclist 45 m ahead, moving at 20 km/h", "a bus 60 m ahead travelling at 40 km/h"): a participle
+    there still describes that road user, as it does right after its name ("a cyclist moving at 20 km/h").
+    A comma between is passed only after such a place: "I passed a cyclist, doing 50" may be either's."""
+    j = k - 1
+    if j >= 0 and mentions[j].slot == "punct" and mentions[j].words == ",":
+        j -= 1
+    placed = j
+    while j >= 0 and mentions[j].slot in _PLACEMENTS:
+        j -= 1
+    return j < placed and j >= 0 and mentions[j].slot == "actor" and mentions[j].value != "ego"
 
 
 def _nearest(named, m):
