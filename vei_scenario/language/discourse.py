@@ -372,9 +372,14 @@ def _followed_by(tokens: list[str], kind_at: KindAt, known: Known, dropped: list
     return out
 
 
+#: What "one of" picks a ridden vehicle out of ("one of the hire bikes", "one of them scooters").
+_PICKED_OUT_OF = frozenset({"the", "those", "these", "them"})
+
+
 def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
     """ "a lad on a scooter", "a student on one of those hire bikes", "a woman riding a bike": one
     referent of the vehicle's type, said with the person's determiner."""
+    tokens = list(tokens)  # (a vehicle picked out of many is said in the singular, below)
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -396,7 +401,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             continue
         # the vehicle: [det | one of those] [up to two modifiers] a rideable noun
         j = i + 1
-        if tokens[j : j + 3] in (["one", "of", "those"], ["one", "of", "these"], ["one", "of", "the"]):
+        picked = tokens[j : j + 2] == ["one", "of"] and j + 2 < len(tokens) and tokens[j + 2] in _PICKED_OUT_OF
+        if picked:
             j += 3
         elif j < len(tokens) and tokens[j] in DETERMINERS:
             j += 1
@@ -429,6 +435,8 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             out[person_start:] = [out[person_start]]
             i = j
             continue
+        if picked:  # ("a man on one of the hire e-scooters": one e-scooter, said as one)
+            tokens[head + ride[1] - 1] = singular(tokens[head + ride[1] - 1])
         det = out[person_start] if out[person_start] in DETERMINERS else "a"  # ("guy on a moped": a rider)
         det = "a" if det in INDEFINITE | POSSESSIVE else det  # ("my mate on his bike": a rider)
         out[person_start:] = [det]
@@ -2140,6 +2148,18 @@ def is_singular(word: str) -> bool:
         word = word.rpartition("-")[2]
     nouns = lemmas(word).get("NOUN")
     return not nouns or word in nouns
+
+
+def singular(word: str) -> str:
+    """``word`` as a singular noun: itself where it is no plural, else its noun lemma ("scooters" →
+    "scooter"); a hyphenated word no dictionary has is so by its last part ("e-scooters" →
+    "e-scooter")."""
+    if is_singular(word):
+        return word
+    first, dash, last = word.rpartition("-")
+    if dash and not lemmas(word):
+        return f"{first}-{singular(last)}"
+    return lemmas(word)["NOUN"][0]
 
 
 def _new_in_line(tokens: list[str], start: int) -> bool:

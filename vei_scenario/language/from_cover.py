@@ -29,7 +29,7 @@ from __future__ import annotations
 from typing import Protocol
 
 from vei_scenario.language.discourse import VEHICLES
-from vei_scenario.language.reading import Reading, stands_there
+from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: Prepositions of cover: what someone is behind, between or among hides them from the ego.
 _COVER = frozenset(("behind", "between", "among", "amongst"))
@@ -121,13 +121,22 @@ def cover_stands(actors: list, reading: Reading) -> None:
     if all(_standing_cover(a) for a in actors):
         return  # (no one but the cover: what it carries is all that was read)
     for a, spec in zip(actors, reading.actors):
-        if not _standing_cover(a) or stands_there(spec):
-            continue
-        brakes = any(b[0] in _BRAKING for b in spec.behaviours)
-        if brakes and reading.ego_speed_mps is None and spec.speed_mps:
-            reading.ego_speed_mps = spec.speed_mps
-        spec.behaviours = [("stop", {}, None, "sequence")]
-        spec.speed_mps = 0.0
-        a.stationary = a.parked = True  # (at the kerb, where it hides someone)
-        if not (spec.relation or "").startswith("roadside"):
-            spec.relation = None  # (the parked ones' side puts it at the kerb)
+        if _standing_cover(a):
+            stand_at_the_kerb(a, spec, reading)
+
+
+def stand_at_the_kerb(a: _Cover, spec: ActorSpec, reading: Reading) -> None:
+    """Make road user ``spec`` (gathered as ``a``) of ``reading`` stand parked at the kerb: it stops, at
+    speed 0 (its start is cleared for the parked ones' side). What the reader hung on it was said of
+    someone else; a speed with a braking is the ego's, where the ego has none (the ego's stop for the
+    one the parked vehicle hides)."""
+    if stands_there(spec):
+        return
+    brakes = any(b[0] in _BRAKING for b in spec.behaviours)
+    if brakes and reading.ego_speed_mps is None and spec.speed_mps:
+        reading.ego_speed_mps = spec.speed_mps
+    spec.behaviours = [("stop", {}, None, "sequence")]
+    spec.speed_mps = 0.0
+    a.stationary = a.parked = True  # (at the kerb, where it hides someone)
+    if not (spec.relation or "").startswith("roadside"):
+        spec.relation = None  # (the parked ones' side puts it at the kerb)

@@ -33,6 +33,8 @@ from vei_scenario.language.said_again import plural
 WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter", "motorcycle"))
 #: Determiners that count or bring in one new: a plural named with one (or a number) is counted.
 _COUNTING = frozenset(("a", "an", "another", "several", "both", "each", "every", "couple", "pair"))
+#: The modal auxiliaries by their lemmas ("should" is "shall"'s, "could" is "can"'s): a closed class.
+_MODAL_LEMMAS = frozenset(("can", "will", "shall", "may", "must", "ought"))
 #: Words that set a plural apart from the one in the scene: "the other joggers" are others there.
 _APART = frozenset(("other", "others", "rest"))
 
@@ -59,11 +61,19 @@ def _many(a: _Named) -> bool:
     return bool(last) and (many(last) or plural(last))
 
 
+def _modal(word: str) -> bool:
+    """Whether ``word`` is a modal auxiliary ("should", "could", "must"; by its lemma)."""
+    return bool(set(lemmas(word).get("AUX", ())) & _MODAL_LEMMAS)
+
+
 def _told_then_or_now(tokens: list[str], k: int) -> bool:
     """Whether the verb at ``k``, right after a plural, tells what those ones did or are doing ("were
     running", "ran", "are riding"); a past that is also the verb's plain form ("riders come off the
-    path", "cyclists cut across here") may be said of them in general, and is not taken as told."""
+    path", "cyclists cut across here") may be said of them in general, and is not taken as told, nor
+    is a modal ("those scooters should not be allowed": what such ones may or ought to do)."""
     w = tokens[k] if k < len(tokens) else ""
+    if _modal(w):
+        return False
     plain = w in lemmas(w).get("VERB", ()) and w not in ("are", "am", "'re", "were", "was")
     return told_in_the_past(tokens, k) and not plain
 

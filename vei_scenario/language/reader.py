@@ -59,6 +59,7 @@ from vei_scenario.language import (
     narrator_vehicle,
     no_lane_beside,
     off_a_place,
+    parked_rows,
     protagonist,
     report_vehicle,
     run_on,
@@ -2866,6 +2867,7 @@ def _read(text: str) -> Reading:
     if not ego_named:  # (before a braking driver is taken for one to swerve round)
         actors = ego_double.merge_ego_driver(actors, r)  # ("Driver braked hard and our cases slid everywhere")
     from_cover.cover_stands(actors, r)  # ("ran out between parked cars ... the taxi stopped in time")
+    parked_rows.rows_stand(actors, r, scanned)  # ("cars parked both sides, and a lad shot out": they stand)
     _parked(actors, r.actors)
     _cut_outs(
         r.actors,
