@@ -2420,7 +2420,7 @@ def _road_user_evades(words: list[str], i: int) -> bool:
 
 
 #: Verbs (lemmas) of easing off or making room for another ("slowed", "decelerated", "moved over").
-_EASING = frozenset(("slow", "decelerate", "ease", "brake", "move", "pull", "steer", "detect"))
+_EASING = frozenset(("slow", "decelerate", "ease", "move", "steer", "detect"))
 #: Adverbs of a reaction made in good time and without force: planned, not forced.
 _PLANNED = frozenset(("early", "smoothly", "gradually", "progressively", "gently"))
 
@@ -2434,6 +2434,8 @@ def _planned_reaction(words: list[str], i: int) -> bool:
     w = words[i]
     if w.endswith("ing") or not _lemmas(w) & (_EASING | _PERCEIVING) or _denied_before(words, i):
         return False
+    if i > 0 and (words[i - 1] in _DETERMINERS or words[i - 1] in _POSSESSIVES):
+        return False  # ("the move", "my slow start": a noun)
     if _scoped(words, i, _HYPOTHETICAL, 4) or _modal_perfect(words, i):
         return False  # ("should have slowed early", "if it had braked smoothly")
     return bool(set(words[i + 1 : i + 6]) & _PLANNED)
