@@ -763,6 +763,14 @@ _THINGS = (
     r"cones?|barriers?|load|cargo"
 )
 _A_THING = re.compile(rf"\b(?:{_THINGS})\b")
+
+
+def lies_on_roads(word: str) -> bool:
+    """Whether ``word`` names a thing that lies on a road ("debris", "pallets", "a tree"): what a
+    vehicle strikes there is an obstacle of the scene, met as a road user is."""
+    return _A_THING.fullmatch(word) is not None
+
+
 #: A noun phrase of one of them: its article, a measure of it ("a pile of", "a line of"), how it came
 #: there or what it is made of, a noun before it after those ("a quantity of plasterboard sheets"; never a
 #: bare word before it: "to avoid debris"), and what a bracket says it is ("a static obstacle (lost cargo)").

@@ -33,6 +33,7 @@ from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.normalise import lies_on_roads
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
 
@@ -361,6 +362,44 @@ def _meets_road_user(after: list[str]) -> bool:
     return True
 
 
+def names_a_thing(phrase: list[str]) -> bool:
+    """Whether the noun phrase opening ``phrase`` (its determiners already passed) has a head that
+    English knows only as a noun of a thing: no road user, no part of a vehicle or a body, no street
+    furniture ("the sirens off", "my rating lol", "the radio"). A verb of contact with such an object
+    ("knocked the sirens off", "hit the indicator") handles a control or a possession, not another
+    road user. A word English does not know (a model's name: "the Qashqai") is no such noun."""
+    head = None
+    for w in phrase:
+        found = _pos(w)
+        if w in ("'s", "s"):
+            head = None  # ("my client's vehicle": the possessor's noun is no head; what it has follows)
+            continue
+        if ("NOUN" not in found and "ADJ" not in found) or w in _BREAK_WORDS or w in _PHRASE_ENDS:
+            break
+        if _road_user_word(w) or w in _PERSON_OBJECTS or w in _MET_NOUNS or w.rstrip("s") in _MET_NOUNS:
+            return False
+        if lies_on_roads(w):
+            return False  # ("struck the debris": an obstacle on the road, met)
+        if w in _unprotected_heads() or w in _EGO_HEADS or w in _EGO_NOUN_HEADS or w.endswith(("body", "one")):
+            return False  # ("hits ego", "nobody hits anybody": the ego, a person)
+        head = w if "NOUN" in found else head
+    else:
+        return False  # (the phrase runs on past what was given: its head is not seen)
+    return head is not None
+
+
+def _destination(words: list[str], i: int) -> bool:
+    """Whether the noun of contact at ``i`` is the object of "to" (its article between) after a noun
+    or a number, no verb: where a call or a journey goes ("Cat 2 to an RTC", "on the way to a
+    crash", "a call to an accident"), another scene than the one told. After a verb it may be a
+    consequence ("led to a collision") and is read as before."""
+    k = i - 1
+    if k < 2 or words[k] not in _DETERMINERS or words[k - 1] != "to":
+        return False
+    before = words[k - 2]
+    return not _is_verb(before) and ("NOUN" in _pos(before) or _number(before) is not None)
+
+
 def _modifies_a_noun(nxt: str) -> bool:
     """Whether a contact noun before ``nxt`` is the first noun of a compound ("response" in "RTC
     response", "statistics", "investigation"): ``nxt`` is only ever a noun, and not a road user's, so
@@ -376,6 +415,8 @@ def _is_contact(words: list[str], i: int) -> bool:
     nxt = words[i + 1] if i + 1 < len(words) else ""
     prev = words[i - 1] if i > 0 else ""
     if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS):
+        if w not in _CONTACT_NOUNS and _counted(words, i):
+            return False  # ("47 reported collisions involving e-scooters last year": a statistic)
         if nxt in _COMPOUND_HEADS or prev in ("time-to", "eye") or w.startswith("time-to"):
             return False
         if _modifies_a_noun(nxt):
@@ -384,6 +425,8 @@ def _is_contact(words: list[str], i: int) -> bool:
             return False
         if prev in ("near", "near-"):
             return False  # ("a near collision": a near miss, read by _is_near)
+        if _destination(words, i):
+            return False  # ("Cat 2 to an RTC", "on our way to a crash": a call to another scene)
         if w in ("crash", "crashes") and nxt in ("into", "through"):
             return True
         return not (w == "contact" and prev in ("eye",))
@@ -411,7 +454,10 @@ def _is_contact(words: list[str], i: int) -> bool:
         if obj[:1] and (obj[0] in _POSSESSIVES or obj[0] in ("the", "a")) and _under_road_user(obj[1:]):
             return True  # ("went under the nearside front", "and under the wheels of the lorry")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
-        return True  # ("car versus e-scooter": a report's name for a collision between the two)
+        side = words[i + 1 : i + 4]
+        # ("car versus e-scooter": a report's name for a collision between the two; not "lane change
+        # versus braking", two ways of escaping)
+        return names_road_user(side) or side[0] in _EGO_HEADS or _road_user_word(prev) or prev in _EGO_HEADS
     if (
         w in _IMPACT_SOUNDS
         and prev not in ("speed", "road")
@@ -461,6 +507,9 @@ def _is_contact(words: list[str], i: int) -> bool:
             return False  # ("put in speed bumps", "over the road bumps": the road's traffic calming)
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
+        obj = words[i + 1 : i + 7] + [""] * (len(words) <= i + 7)  # (its clause's end closes the phrase)
+        if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:]):
+            return False  # ("knocked the sirens off", "is this going to hit my rating")
         return _meets_road_user(_object_of(words, i))
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
         j = i + 1
@@ -604,10 +653,38 @@ def _thing_subject(words: list[str], i: int) -> bool:
 _INTENSIFIERS = frozenset(("very", "so", "too", "just", "only", "really"))
 
 
+#: Determiners that open a plural noun phrase ("the clips", "these hits").
+_PLURAL_DETERMINERS = frozenset(("the", "these", "those", "some", "many", "several", "more", "fewer", "few"))
+
+
+def _plural_noun(words: list[str], i: int) -> bool:
+    """Whether the -s form at ``i`` is a plural noun: a determiner or a number right before it ("the
+    clips I sent", "47 crashes"); a verb's -s form follows its subject ("the van clips her")."""
+    w = words[i]
+    if not w.endswith("s") or "NOUN" not in _pos(w) or i == 0:
+        return False
+    return words[i - 1] in _PLURAL_DETERMINERS or _number(words[i - 1]) is not None
+
+
+def _counted(words: list[str], i: int) -> bool:
+    """Whether the plural noun of contact at ``i`` is counted by a number of two or more, its
+    modifiers between ("47 reported collisions", "two recorded slight injury crashes"): a figure of
+    many events, a statistic, not this scene's outcome."""
+    for k in range(i - 1, max(-1, i - 5), -1):
+        value = _number(words[k])
+        if value is not None:
+            return value >= 2.0
+        if words[k] in _PHRASE_ENDS or words[k] in _BREAK_WORDS or words[k] in _NEGATORS:
+            return False
+    return False
+
+
 def _verbal(words: list[str], i: int) -> bool:
     """Whether a word that can be a noun ("hit", "strike", "tag") is a verb here: inflected, after a
     subject pronoun, a modal or "to", or before its object; "the rail strike" and "a hit" are nouns."""
     w = words[i]
+    if _plural_noun(words, i):
+        return False  # ("watch the clips", "two clips a day": a plural noun, not "the van clips")
     if "NOUN" not in _pos(w) or w not in _pos(w).get("VERB", ()):
         return True  # (no noun, or inflected: "struck", "tagged", "hits")
     k = i - 1
@@ -1043,12 +1120,19 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
         front = _relative_to_other(words, k)  # ("2 m in front of us", "a metre ahead")
+        if words[k] == "clear" and not set(words[max(0, i - 3) : i]) & _WIDE:
+            metres = _length_said(words[max(0, i - 3) : i + 1])
+            if metres is not None and metres <= 1.0:
+                return NEAR_MISS  # ("rider continued, approx 1 m clear": the clearance left, a metre or less)
         if (
             front
             or (
                 words[k] in ("from", "off", "short", "before")
                 and k + 1 < len(words)
-                and (words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"})
+                and (
+                    words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"}
+                    or _vehicle_part(["the", *words[k + 1 : k + 4]])  # ("~1 m off front bumper": no article)
+                )
             )
             or _apart_after_a_stop(words, i, k)
         ):
@@ -1113,6 +1197,9 @@ _AT_MOST = (["max"], ["maximum"], ["tops"], ["at", "most"], ["at", "best"], ["if
 #: Places a length may be said from: a margin to one of these is where someone is, not how close two
 #: road users came.
 _EDGES_AND_LINES = _PLACES | _FURNITURE | frozenset(("edge", "line", "marking", "markings", "gutter", "centre-line"))
+#: Nouns a road user's contact may land on besides road users: a vehicle's parts, a body's parts,
+#: and the furniture and places whose hits are read by their own rules.
+_MET_NOUNS = _VEHICLE_PARTS | _BODY_PARTS | _EDGES_AND_LINES
 #: What follows a unit when the length is a size, not a margin ("a 50 cm wide trailer").
 _SIZE_WORDS = frozenset(("wide", "long", "high", "tall", "deep", "across", "thick"))
 #: Words after "left" that make it a side, not what was left ("2 m left of the line", "left lane"); a
@@ -1816,10 +1903,12 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         return None  # ("swerved to miss him and hit the kerb", "someone is going to get hit here")
     if _threatened(words, i):
         return "hedged"  # ("the ego must brake or they will collide": what the alternative would bring)
+    if _supposed_event(words, i):
+        return None  # ("the impact would occur at 50 %": an event supposed, not one that happened)
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
     hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
-    hedged = hedged or _only_just(words, i)
+    hedged = hedged or _only_just(words, i) or _near_enough(words, i)
     hedged = hedged or _believed(words, i)
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
@@ -1830,6 +1919,22 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         # ("must overtake him and not touch him": the outcome the test wants, no contact)
         return "required" if _required(before) else "denied"
     return "contact"
+
+
+def _supposed_event(words: list[str], i: int) -> bool:
+    """Whether the noun of contact at ``i`` is the subject of a modal of supposition ("the impact
+    would occur", "a collision could happen", "a crash might follow"): the event is supposed, not
+    told. Not "should" or "will": a test's "collision should happen" is the outcome it requires."""
+    w = words[i]
+    noun = w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS)
+    return noun and words[i + 1 : i + 2] != [] and words[i + 1] in _MODALS - {"should"}
+
+
+def _near_enough(words: list[str], i: int) -> bool:
+    """Whether "near enough" (almost) stands before the contact at ``i`` in its clause ("near enough
+    had my first shunt", "near enough took my bumper off"); "near enough to touch" is a distance."""
+    before = words[max(0, i - 5) : i]
+    return any(before[k : k + 2] == ["near", "enough"] and before[k + 2 : k + 3] != ["to"] for k in range(len(before)))
 
 
 #: Nouns of what may come: a contact noun as their "of" complement names a danger, not an event.
@@ -2145,14 +2250,20 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("hedged")
             if w == "harm" and _denied_before(words, i):
                 add("unharmed")  # ("no harm done": how it ended, not how close it was)
-            elif w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
-                add("safe")
+            elif w in _TROUBLE and words[max(0, i - 2) : i] == ["do", "not"]:
+                pass  # ("don't worry": said to the reader, not of the scene)
+            elif w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without", "zero"), 1)):
+                add("safe")  # ("no issues", "zero drama")
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
                 add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i) and not _sign_off(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)
-                if not (w == "fine" and (i + 1 < len(words) or words[i - 1 : i] in (["a"], ["an"], ["the"]))):
+                paired = whole[at + i + 1 : at + i + 3]  # ("fine and dry": the weather, named with another)
+                weather = w == "fine" and paired[:1] == ["and"] and _conditions(paired[1:])
+                if not weather and not (
+                    w == "fine" and (i + 1 < len(words) or words[i - 1 : i] in (["a"], ["an"], ["the"]))
+                ):
                     add("unharmed" if w == "fine" else "safe")  # ("she's fine": how it left them)
             then = (
                 words[i + 2]
@@ -2183,6 +2294,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 or (words == ["clear"] and ends_sentence and not sky)
             ):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
+            if _is_verb(w) and _planned_reaction(words, i):
+                add("yield")  # ("detected early, decelerated smoothly", "moved out early": no one forced)
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
             elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
@@ -2306,6 +2419,28 @@ def _road_user_evades(words: list[str], i: int) -> bool:
     return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS)
 
 
+#: Verbs (lemmas) of easing off or making room for another ("slowed", "decelerated", "moved over").
+_EASING = frozenset(("slow", "decelerate", "ease", "move", "steer", "detect"))
+#: Adverbs of a reaction made in good time and without force: planned, not forced.
+_PLANNED = frozenset(("early", "smoothly", "gradually", "progressively", "gently"))
+
+
+def _planned_reaction(words: list[str], i: int) -> bool:
+    """Whether the finite verb at ``i`` is a reaction made early or smoothly: a verb of easing off,
+    making room or perceiving with such an adverb in the words after it ("detected early",
+    "decelerated smoothly to 5 km/h", "moved out to lane 2 early", "spotted him early"). Whoever
+    makes it, a reaction in good time is no escape: giving way, a safe pass unless more is said. Not
+    denied, not a participle ("slowing gently" says how it went on) nor under a condition."""
+    w = words[i]
+    if w.endswith("ing") or not _lemmas(w) & (_EASING | _PERCEIVING) or _denied_before(words, i):
+        return False
+    if i > 0 and (words[i - 1] in _DETERMINERS or words[i - 1] in _POSSESSIVES):
+        return False  # ("the move", "my slow start": a noun)
+    if _scoped(words, i, _HYPOTHETICAL, 4) or _modal_perfect(words, i):
+        return False  # ("should have slowed early", "if it had braked smoothly")
+    return bool(set(words[i + 1 : i + 6]) & _PLANNED)
+
+
 def _hindsight(words: list[str], i: int) -> bool:
     """Whether the verb at ``i`` is under a modal of hindsight ("should have waited", "should've
     waited", "could have given way", "ought to have"): said, not done; "should brake" in a test's
@@ -2342,7 +2477,7 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
-        forced = sudden or kinds & {"evade", "brake"}
+        forced = sudden or intruded or kinds & {"evade", "brake"}
         kinds.add("evade" if forced and not kinds & {"safe", "yield"} else "safe")
     if sudden and kinds & {"stop", "brake"} and not kinds & {"contact", "safe", "yield", "required", "near"}:
         kinds.add("evade")  # ("a kid shot out in front of me and I just stopped")

@@ -405,8 +405,11 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     text = ncap_rewrite(text, _actor_word)
     text = _NCAP_NAME.sub(_ncap_said, text)
     out = []
-    for tok in (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text):
-        if tok.endswith("'s") and len(tok) > 2:
+    found = (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text)
+    for k, tok in enumerate(found):
+        if tok.endswith("'d") and len(tok) > 2 and found[k + 1 : k + 2] == ["have"]:
+            out += [tok[:-2], "would"]  # ("I'd have hit him": "'d have" is "would have", never "had have")
+        elif tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
             stem = tok.split("'", 1)[0]
