@@ -8,7 +8,10 @@ more of that road user than a bare going (or a verb it has no word for) and brak
 (see :mod:`crossing_reaction`). Leaving the side of the road with nothing else said of the move is a
 crossing of the ego's road (as :mod:`from_cover` and the reader's "walks from the far side" read it
 with no brake after); the brakes are then the ego's reaction, which the pass over the finished reading
-drops.
+drops. The crossing may be said in words too ("stepped out", "ran across") with a brake said before
+the road user is even named ("The emergency brake was shown ... a child stepped out from behind a
+van"): the reader hands that brake to the first road user named, but it is the ego's all the same, and
+the crossing comes first.
 
 What must not be read so: a vehicle (one coming off the side of the road joins the traffic, read
 elsewhere), a road user whose own move is said (along the kerb, standing, passed, waiting, against the
@@ -28,6 +31,8 @@ from vei_scenario.language.discourse import VULNERABLE
 _WALKERS_AND_RIDERS = VULNERABLE | {"unknown"}
 #: Behaviours that say no more than that someone goes.
 _BARE_GOING = frozenset(("keep_going",))
+#: The crossing said in words ("stepped out", "ran across"): what leaving the side of the road is.
+_CROSSING = "cross_in_front"
 
 
 def _free_brake(behaviour: tuple) -> bool:
@@ -40,15 +45,17 @@ def crossing_then_brakes(kind: str, behaviours: list, quiet: bool, own_verb: boo
     """``behaviours`` of a road user of ``kind`` said to leave the kerb or come out from cover, read as
     a crossing followed by the free brakes (which the reader's last pass drops as the ego's), or None
     where they are no such thing: it must be a walker or rider that is ``quiet`` (nothing else makes it
-    go along, stand or be passed) whose behaviours are bare goings and at least one free brake, with a
-    going among them or a verb of its own the reader has no word for (``own_verb``: "darts off")."""
+    go along, stand or be passed) whose behaviours are bare goings, crossings and at least one free brake, with a
+    going or a crossing among them or a verb of its own the reader has no word for (``own_verb``:
+    "darts off"). A crossing said in words keeps its settings and criticality."""
     if kind not in _WALKERS_AND_RIDERS or not quiet or not behaviours:
         return None
-    if not all(b[0] in _BARE_GOING or _free_brake(b) for b in behaviours):
+    if not all(b[0] in _BARE_GOING or b[0] == _CROSSING or _free_brake(b) for b in behaviours):
         return None
     brakes = [b for b in behaviours if _free_brake(b)]
-    going = any(b[0] in _BARE_GOING for b in behaviours)
+    going = any(b[0] in _BARE_GOING or b[0] == _CROSSING for b in behaviours)
     if not brakes or not (going or own_verb):
         return None
-    link = behaviours[0][3]
-    return [("cross_in_front", {}, None, link), *brakes]
+    said = next((b for b in behaviours if b[0] == _CROSSING), None)  # (its words' criticality and settings)
+    _, cfg, crit = said[:3] if said else ("", {}, None)
+    return [(_CROSSING, cfg, crit, behaviours[0][3]), *brakes]

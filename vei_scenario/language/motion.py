@@ -2218,10 +2218,19 @@ def out_into_the_road(clauses: list, tokens: list[str]) -> list:
             own = all(x.slot not in _NEW_SUBJECT for x in kept[kept.index(subject) + 1 : k])
             if tokens[end : end + 1] == ["in"] and not own:
                 continue  # ("..., so both come out in front of me": a subject of its own, not the one named)
-            name = "cross_in_front" if subject.value in _CROSSERS else "cut_in"
+            name = "cross_in_front" if _crosses_out(subject.value, tokens, end) else "cut_in"
             kept[k] = replace(m, slot="behaviour", value=(name, {}))
         out.append((link, kept))
     return out
+
+
+def _crosses_out(kind: str, tokens: list[str], end: int) -> bool:
+    """Whether a road user of ``kind`` that comes out where ``tokens[end]`` goes on (past "out" and its
+    preposition) crosses the road rather than pulling out into it: a walker or rider does, and so does
+    one the reader has no kind for yet ("a rider", "someone") that comes out from between or behind
+    cover, as :mod:`from_cover` reads it: only someone on foot or on two small wheels is hidden at the
+    kerb by what stands there, and a vehicle is named as one."""
+    return kind in _CROSSERS or (kind == "unknown" and end < len(tokens) and tokens[end] in _FROM_HIDING)
 
 
 #: Junctions: going straight across one is going through it, no crossing of the ego's road.
