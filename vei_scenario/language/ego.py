@@ -1403,9 +1403,10 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
     the story ("I was behind Mr Tan's taxi")."""
     if NARRATOR_PERSON & set(tokens):
         return tokens
+    written, tokens = tokens, _possessive_unmarked(tokens, kind_at)
     users = road_users(tokens, kind_at, known)
     if any(p.kind == "ego" for p in users) or len(users) < 2:
-        return tokens
+        return written
 
     for p in users:
         standing = p.kind not in VEHICLES or placed_by_word(tokens, p) or stands_parked(tokens, p)
@@ -1424,7 +1425,21 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
             i += 1
         out = driver_is_ego(out, kind_at, known, dropped)  # ("the driver waited": its driver)
         return _pronouns_as_ego(out, gender, kind_at, known) if gender else out
-    return tokens
+    return written
+
+
+def _possessive_unmarked(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """ "Dads car got rear-ended", "my sisters Fiesta": a family word ending in "s" right before a
+    vehicle is its possessive with the apostrophe left out (a family word makes no compound with a
+    vehicle noun), said "dad 's car" as :func:`_owner_phrase` reads an owner."""
+    out: list[str] = []
+    for k, w in enumerate(tokens):
+        vehicle = kind_at(tokens, k + 1) if k + 1 < len(tokens) else None
+        if w.endswith("s") and w[:-1] in FAMILY and vehicle is not None and vehicle[0] in VEHICLES:
+            out += [w[:-1], "'s"]
+            continue
+        out.append(w)
+    return out
 
 
 def _organisation_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:

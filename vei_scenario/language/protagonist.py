@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 
 from vei_scenario.language.ego import (
     AT_WHEEL,
+    BE,
     BETWEEN,
     DEFINITE,
     FIRST_PERSON,
@@ -60,6 +61,13 @@ BEFORE_VERB = frozenset(
 #: Nouns of a road user's own space that another is placed by ("the path of the van", "the front of
 #: the cab", "the rear of the car").
 OWN_SPACE = frozenset({"path", "front", "rear", "back", "side", "nose", "way", "lane"})
+#: Articles that open a noun phrase (the object of a preposition: "behind a bicyclist").
+ARTICLES = DEFINITE | INDEFINITE
+#: Auxiliaries of the passive and an adverb between ("was struck", "got clipped", "had just been hit").
+PASSIVE_AUXILIARIES = BE | {"has", "had", "have", "got", "gets", "get", "just"}
+#: The auxiliaries that make the participle after them passive ("was hit", "got clipped"; "had hit" is
+#: active).
+PASSIVE_VOICE = BE | {"got", "gets", "get"}
 #: Prepositions that place another road user by this one ("came towards the car").
 TOWARDS = frozenset({"towards", "toward"})
 
@@ -74,23 +82,31 @@ class _Referent:
     speed: bool = False
     reacts: bool = False
     placed_by: bool = False
+    struck: bool = False  # the subject of a passive of contact: "was struck by", "got rear-ended"
     known: bool = False  # introduced as known: bare ("Cab 22") or with "the"
 
     @property
     def score(self) -> int:
-        return self.speed + self.reacts + self.placed_by
+        return self.speed + self.reacts + self.placed_by + self.struck
 
 
 def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
-    """Past a relative aside after a mention (", which she estimated to be doing 20 mph,"): where the
-    clause resumes, else ``k``."""
+    """Past a relative aside after a mention (", which she estimated to be doing 20 mph,", or one a
+    participle opens: ", travelling at 25 mph,"): where the clause resumes, else ``k``."""
     if tokens[k : k + 1] == [","] and tokens[k + 1 : k + 2]:
         end = sentence_span(tokens, k)[1]
         close = next((c for c in range(k + 2, end) if tokens[c] == ","), None)
-        relative = tokens[k + 1] in ("which", "who", "that")
+        relative = tokens[k + 1] in ("which", "who", "that") or reduced_relative(tokens[k + 1])
         if close is not None and (relative or (close - k <= 7 and not relative_only)):  # (", a 54-year-old woman,")
             return close + 1
     return k
+
+
+def reduced_relative(word: str) -> bool:
+    """Whether ``word`` opens a reduced relative clause, an aside said of the noun before it as "which
+    was ..." would be: a verb's -ing form (", travelling at 25 mph,", ", proceeding on a green signal
+    at about 40 mph,")."""
+    return word.endswith("ing") and "VERB" in lemmas(word)
 
 
 def _has_speed(tokens: list[str], p, nxt: int) -> bool:
@@ -135,6 +151,22 @@ def _verb_of_reacting(tokens: list[str], k: int) -> int:
     return 0
 
 
+def _struck(tokens: list[str], p) -> bool:
+    """The mention is the subject of a verb of contact in the passive ("the car, proceeding on a green
+    signal, was struck by a lorry", "Dad's car got rear-ended", "the van was clipped"): another road
+    user acted on it, and a report puts what it is about first, as the subject it tells of."""
+    from vei_scenario.language.discourse import CONTACT
+
+    k, last_auxiliary = _past_aside(tokens, p.end), ""
+    while k < len(tokens) and tokens[k] in PASSIVE_AUXILIARIES:
+        last_auxiliary = tokens[k] if tokens[k] != "just" else last_auxiliary
+        k += 1
+    if last_auxiliary not in PASSIVE_VOICE or k >= len(tokens) or tokens[k].endswith("ing"):
+        return False  # ("had hit a cyclist": the perfect, active)
+    head, _, last = tokens[k].rpartition("-")  # ("rear-ended": "rear-" and "ended")
+    return any((f"{head}-{v}" if head else v) in CONTACT for v in lemmas(last).get("VERB", ()))
+
+
 def _placed_by(tokens: list[str], p) -> bool:
     """Another road user is placed by this one: its path, front, lane ("into the path of the Toyota",
     "the van's lane", "from the Civic's right") or "towards" it."""
@@ -152,10 +184,17 @@ def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
     if any(w in PLACED for w in tokens[p.start : p.end]):
         return True
     end = min(sentence_span(tokens, p.end)[1], nxt)
-    return any(
-        tokens[k] in ("ahead", "behind") and tokens[k + 1 : k + 2] not in (["of"], ["it"], ["him"], ["her"], ["them"])
-        for k in range(p.end, end)
-    )
+    return any(tokens[k] in ("ahead", "behind") and not _preposition_with_object(tokens, k) for k in range(p.end, end))
+
+
+def _preposition_with_object(tokens: list[str], k: int) -> bool:
+    """Whether "ahead"/"behind" at ``k`` is a preposition whose object is said ("behind a bicyclist",
+    "ahead of the van", "behind him"): it places by that one, not by someone left unsaid ("brakes
+    hard 20 m ahead")."""
+    nxt = tokens[k + 1 : k + 2]
+    if nxt in (["of"], ["it"], ["him"], ["her"], ["them"]):
+        return True
+    return tokens[k] == "behind" and bool(nxt) and nxt[0] in ARTICLES  # ("behind a bicyclist")
 
 
 def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list[_Referent], _Referent | None]:
@@ -213,6 +252,7 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
             s -= 1
         r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
         r.placed_by |= not of and _placed_by(tokens, p)
+        r.struck |= not of and _struck(tokens, p)
 
 
 def _narrator_only_watches(tokens: list[str]) -> bool:
@@ -259,8 +299,10 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
         return tokens
     users = [p for p in road_users(tokens, kind_at, known) if p.kind != "ego"]
     referents, driver = _referents(tokens, users, VEHICLES)
+    witnessed = bool(FIRST_PERSON & set(dropped))  # (a witness's "I" gone: see without_witness)
     for r in [*referents, *([driver] if driver else [])]:
         _evidence(tokens, users, r, referents)
+        r.struck &= not witnessed  # ("I saw a car get hit by a bus": the witness rules read it)
     motor = [
         r
         for r in referents
@@ -291,7 +333,7 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     first = min(p.start for p in best.mentions)
     if any((r.score, first) > (best.score, r.mentions[0].start) for r in referents if r.kind not in VEHICLES):
         return tokens  # (a walker or rider told about as much, and named first, is the one told from)
-    if not (best.speed or best.reacts):
+    if not (best.speed or best.reacts or best.struck):
         return tokens  # (only placed by: "in front of a car" is said of any road user the ego meets)
     if not any(r is not best for r in referents):
         return tokens  # (no one else to meet: "The lead car brakes" is met by an ego the text leaves unsaid)
