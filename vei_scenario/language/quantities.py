@@ -772,6 +772,9 @@ _PASS_VERBS = frozenset({"pass", "squeeze", "skim", "shave", "brush", "scrape"})
 #: Verbs (lemmas) of motion that go past someone with a particle ("swerved past us", "went round him").
 _MOVE_VERBS = frozenset({"go", "come", "get", "swerve", "ride", "drive", "fly", "whizz", "zip", "squeeze", "nip"})
 _PAST = frozenset({"past", "by", "round", "around"})
+#: Verbs (lemmas) of stopping or coming in ahead: "with" a length after one of them, nearer than a pass,
+#: is the gap left ahead ("passes us and cuts back in with 3 m to spare"), not a pass's room.
+_AHEAD_VERBS = frozenset({"stop", "halt", "pull", "brake", "cut", "merge", "swing"})
 #: How far back in its clause the verb of a pass may stand before "with" ("passed me on the left with").
 _PASS_REACH = 7
 
@@ -789,6 +792,8 @@ def _clearance_of_a_pass(tokens: list[str], i: int) -> bool:
         if tokens[j] in _STOPS or tokens[j] in (",", ";", ":"):
             return False
         said = set(lemmas(tokens[j]).get("VERB", ()))
+        if said & _AHEAD_VERBS:
+            return False
         if said & _PASS_VERBS or (said & _MOVE_VERBS and tokens[j + 1 : j + 2] and tokens[j + 1] in _PAST):
             return True
     return False
