@@ -47,6 +47,8 @@ def _has(text: str, kind: str, gap: float) -> bool:
         ("Going along at 40 km/h a woman walked out from behind a bus, and I pulled up a car length from "
          "her.", "pedestrian", 4.5),
         ("At 30 km/h a boy ran into the road from the right. Missed him by a metre tops.", "pedestrian", 1.0),
+        ("A pickup ran the red light from my left while I was going straight through with my kids in the car. "
+         "Missed my front end by a foot.", "van", 0.3),
     ],
 )  # fmt: skip
 def test_a_length_said_in_words_is_how_near_the_road_user_came(text: str, kind: str, gap: float) -> None:
@@ -78,10 +80,11 @@ def test_a_length_in_words_is_said_in_digits(said: str, digits: str) -> None:
         "i went on foot",
         "a six-foot hedge hid the junction",
         "the parking meter by the kerb",
+        "a van pulled out of a yard on the left",
     ],
 )
 def test_a_foot_or_meter_that_measures_nothing_stays_a_word(said: str) -> None:
-    """A foot on a pedal or on the ground, and a parking meter, are things, not lengths."""
+    """A foot on a pedal or on the ground, a parking meter and a builder's yard are things, not lengths."""
     text = normalise(said)
     assert " m " not in f" {text} " and "0.3" not in text, text
 
@@ -95,9 +98,10 @@ def test_a_foot_or_meter_that_measures_nothing_stays_a_word(said: str) -> None:
         ("A bus was waiting at the stop with a metre gap between it and the kerb, and a boy ran out in "
          "front of it.", "pedestrian", 1.0),
         ("I was riding at 20 km/h and a van came towards me and passed with half a metre to spare.", "van", 0.5),
+        ("The van in front swerved round a pothole about a foot across and I hit it at 30 mph.", "van", 0.3),
     ],
 )  # fmt: skip
 def test_a_length_of_no_gap_to_the_ego_stays_none(text: str, kind: str, length: float) -> None:
-    """A visibility, a place from the kerb, the ego's own travel, a width between others and the room a
-    pass was made with (side by side, across the road) are no road user's gap."""
+    """A visibility, a place from the kerb, the ego's own travel, a width between others, the room a pass
+    was made with (side by side, across the road) and the size of a thing are no road user's gap."""
     assert _gaps(text, kind) and not _has(text, kind, length), _gaps(text, kind)

@@ -752,6 +752,22 @@ def _off_a_flank(tokens: list[str], k: int) -> bool:
     return tokens[k : k + 1] == ["off"] and bool(_FLANKS & set(tokens[k + 1 : k + 5]))
 
 
+#: Words after a length that make it the size of a thing ("a 2 m wide trailer", "a pothole a foot deep").
+_SIZE_WORDS = frozenset({"wide", "long", "high", "tall", "deep", "thick"})
+
+
+def a_size(tokens: list[str], i: int, used: int) -> bool:
+    """Whether the length at ``i`` (``used`` tokens with its unit) is how big something is, not how far
+    apart: a word of size follows it ("a foot deep", "3 m long"), or "across" ending its phrase ("it's
+    about a foot across and deep"; "2 m across the road" is where someone is)."""
+    after = tokens[i + used : i + used + 2]
+    if not after:
+        return False
+    if after[0] in _SIZE_WORDS:
+        return True
+    return after[0] == "across" and (len(after) < 2 or after[1] in _STOPS or after[1] in (",", "and", "or"))
+
+
 #: How far back in its clause "visibility" may head a length ("visibility was down to about 50 m").
 _SEEING_REACH = 7
 

@@ -34,7 +34,7 @@ _FOOT_BEFORE = (
 _HALF_A = re.compile(rf"\bhalf an? ({_UNITS}|foot)\b(?!-)")
 _A_COUPLE_OF = re.compile(rf"\ba couple (?:of )?({_UNITS}|feet)\b(?!-)")
 _AND_A_HALF = re.compile(rf"\b(?:a|one) ({_UNITS}|foot) and a half\b")
-_AN_ARTICLE = re.compile(rf"\b(?:a|one) ({_UNITS})\b(?!-)")
+_AN_ARTICLE = re.compile(r"\b(?:a|one) (metre|meter|car length)\b(?!-)")  # ("a yard" is also a place)
 _A_FOOT = re.compile(rf"\b(?:((?:{_FOOT_AFTER}) )a foot\b(?!-)|a foot(?= (?:{_FOOT_BEFORE})\b))")
 _CENTIMETRES = re.compile(r"\b(\d+(?:\.\d+)?)\s*(?:cm|cms|centimet(?:re|er)s?)\b")
 
