@@ -17,6 +17,7 @@ import re
 import unicodedata
 from functools import lru_cache
 
+from vei_scenario.language import spoken_lengths
 from vei_scenario.language.lemmas import english, lemmas
 
 _ONES = {
@@ -884,6 +885,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
+    text = spoken_lengths.in_digits(text)  # ("a metre", "half a foot": as figures, then as metres)
     text = _LENGTHS.sub(_lengths, text)
     text = _HOUR_OF.sub(_hour_of, text)
     text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)

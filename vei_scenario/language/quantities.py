@@ -27,6 +27,7 @@ from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import sentence_start
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.sides import KERB_NOUNS
 
 #: Heads that make a number no speed of travel nor a starting gap: a measure across the road ("a lateral
 #: velocity of 1 m/s", "1.5 m clearance"), how far one sees ("visibility reduced to 150 m"), or the
@@ -740,7 +741,12 @@ def lateral(tokens: list[str], i: int, used: int) -> bool:
             return True
     after = tokens[i + used : i + used + 2]
     return (
-        (bool(after) and after[0] in LATERAL_HEADS) or _subject_is_lateral(tokens, i) or _off_a_flank(tokens, i + used)
+        (bool(after) and after[0] in LATERAL_HEADS)
+        or _subject_is_lateral(tokens, i)
+        or _off_a_flank(tokens, i + used)
+        or _from_the_kerb(tokens, i + used)
+        or _how_far_one_sees(tokens, i)
+        or _clearance_of_a_pass(tokens, i)
     )
 
 
@@ -748,6 +754,75 @@ def _off_a_flank(tokens: list[str], k: int) -> bool:
     """Whether the words from ``k`` (after a length) say it off a vehicle's side ("1 m off the left side
     of the van", "a foot off my wing mirror"): a passing margin across the road, not a gap ahead."""
     return tokens[k : k + 1] == ["off"] and bool(_FLANKS & set(tokens[k + 1 : k + 5]))
+
+
+#: Words after a length that make it the size of a thing ("a 2 m wide trailer", "a pothole a foot deep").
+_SIZE_WORDS = frozenset({"wide", "long", "high", "tall", "deep", "thick"})
+
+
+def a_size(tokens: list[str], i: int, used: int) -> bool:
+    """Whether the length at ``i`` (``used`` tokens with its unit) is how big something is, not how far
+    apart: a word of size follows it ("a foot deep", "3 m long"), or "across" ending its phrase ("it's
+    about a foot across and deep"; "2 m across the road" is where someone is)."""
+    after = tokens[i + used : i + used + 2]
+    if not after:
+        return False
+    if after[0] in _SIZE_WORDS:
+        return True
+    return after[0] == "across" and (len(after) < 2 or after[1] in _STOPS or after[1] in (",", "and", "or"))
+
+
+#: How far back in its clause "visibility" may head a length ("visibility was down to about 50 m").
+_SEEING_REACH = 7
+
+
+def _how_far_one_sees(tokens: list[str], i: int) -> bool:
+    """Whether the length at ``i`` is what "visibility" comes to in its clause ("visibility was down to
+    about 50 m", "visibility in the spray under 40 m"): how far one sees, however it is put, no gap."""
+    for k in range(i - 1, max(i - 1 - _SEEING_REACH, -1), -1):
+        if tokens[k] in _STOPS or tokens[k] in (",", ";", ":"):
+            return False
+        if tokens[k] == "visibility":
+            return True
+    return False
+
+
+#: Verbs (lemmas) of going past someone by themselves ("passed me with a metre to spare").
+_PASS_VERBS = frozenset({"pass", "squeeze", "skim", "shave", "brush", "scrape"})
+#: Verbs (lemmas) of motion that go past someone with a particle ("swerved past us", "went round him").
+_MOVE_VERBS = frozenset({"go", "come", "get", "swerve", "ride", "drive", "fly", "whizz", "zip", "squeeze", "nip"})
+_PAST = frozenset({"past", "by", "round", "around"})
+#: Verbs (lemmas) of stopping or coming in ahead: "with" a length after one of them, nearer than a pass,
+#: is the gap left ahead ("passes us and cuts back in with 3 m to spare"), not a pass's room.
+_AHEAD_VERBS = frozenset({"stop", "halt", "pull", "brake", "cut", "merge", "swing"})
+#: How far back in its clause the verb of a pass may stand before "with" ("passed me on the left with").
+_PASS_REACH = 7
+
+
+def _clearance_of_a_pass(tokens: list[str], i: int) -> bool:
+    """Whether the length at ``i`` is the room a pass was made "with" ("passed with maybe half a metre to
+    spare", "swerved past us with a metre to spare"): how far apart side by side, across the road, not
+    where anyone starts. Overtaking keeps its own reading (the gap it cuts back in at)."""
+    k = i - 1
+    while k >= 0 and (tokens[k] in _HEDGE_WORDS or tokens[k] in APPROXIMATORS or tokens[k] in GUESSES):
+        k -= 1
+    if k < 0 or tokens[k] != "with":
+        return False
+    for j in range(k - 1, max(k - 1 - _PASS_REACH, -1), -1):
+        if tokens[j] in _STOPS or tokens[j] in (",", ";", ":"):
+            return False
+        said = set(lemmas(tokens[j]).get("VERB", ()))
+        if said & _AHEAD_VERBS:
+            return False
+        if said & _PASS_VERBS or (said & _MOVE_VERBS and tokens[j + 1 : j + 2] and tokens[j + 1] in _PAST):
+            return True
+    return False
+
+
+def _from_the_kerb(tokens: list[str], k: int) -> bool:
+    """Whether the words from ``k`` (after a length) measure it from the kerb or the road's edge ("rode
+    a metre from the kerb", "2 m off the verge"): where a road user is across the road, no gap to the ego."""
+    return tokens[k : k + 1] in (["from"], ["off"]) and bool(KERB_NOUNS & set(tokens[k + 1 : k + 4]))
 
 
 _COPULAS = frozenset({"is", "was", "are", "were", "'s"})

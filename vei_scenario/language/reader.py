@@ -866,6 +866,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             words = " ".join(tokens[i : i + used])
             if kind in ("speed", "distance", "speed_range") and Q.lateral(tokens, i, used):
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
+            if kind == "distance" and Q.a_size(tokens, i, used):
+                kind = "skip"  # ("a pothole about a foot across"): how big a thing is, no gap
             unit = tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS
             owners = Q.owners(tokens, i, unit, ending_at, lambda w: _pos(w) == {"NOUN"} and w not in FUNCTION_WORDS)
             if kind == "unknown":
@@ -2530,6 +2532,7 @@ def _read(text: str) -> Reading:
         if not named and actors and any(p.slot == "distance" for p in pending):
             # ("..., 40 m gap": to the one named last that moves; parked cars are where it comes from)
             moving = [a for a in actors if not a.stationary] or actors
+            moving = [a for a in moving if a.behaviours] or moving  # (not one only named: "my kids in the car")
             for p in [p for p in pending if p.slot == "distance"]:
                 _apply(p, moving[-1], r, link, added)
             pending = [p for p in pending if p.slot != "distance"]
