@@ -140,3 +140,24 @@ def stand_at_the_kerb(a: _Cover, spec: ActorSpec, reading: Reading) -> None:
     a.stationary = a.parked = True  # (at the kerb, where it hides someone)
     if not (spec.relation or "").startswith("roadside"):
         spec.relation = None  # (the parked ones' side puts it at the kerb)
+
+
+class _Placed(Protocol):
+    """What the reader gathered of where a road user is, as far as :func:`side_of_the_cover` reads it."""
+
+    kind: str
+    relation: str | None
+    side: str | None
+    kerb_side: str | None
+    lane_side: str | None
+
+
+def side_of_the_cover(who: _Placed, cover: _Placed | None) -> str | None:
+    """The kerb side a walker or rider who comes out from behind or between a road user said to stand at
+    a side of the road starts at: that side ("a van is parked on the left ... a child runs out from
+    behind the van"), where nothing places the walker itself. Why: the cover hides it from the ego
+    because they are at the same kerb; read alone, it was put at the writer's near kerb."""
+    if cover is None or who.side or who.kerb_side or who.lane_side or cover.kind not in VEHICLES:
+        return None
+    where = cover.kerb_side or cover.side or (cover.relation or "").removeprefix("roadside_")
+    return where if where in ("left", "right") else None

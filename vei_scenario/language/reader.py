@@ -321,6 +321,7 @@ class _Actor:
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
     own_lane: bool = False  # in a lane of its own beside the ego's ("in the cycle lane on our right")
     from_cover: bool = False  # said to come out from behind or between something ("from behind a bus")
+    cover: _Actor | None = None  # the road user it comes out from behind or between ("from behind the van")
     speed_at: int | None = None  # where its speed was said in the scanned words (None: not said there)
 
 
@@ -2186,6 +2187,7 @@ def _read(text: str) -> Reading:
                         hider.hides = True  # ("darts out from behind an ice-cream van": what it comes out from)
                     if isinstance(clause_subject, _Actor) and from_cover.out_of_cover(scanned, m.start, FUNCTION_WORDS):
                         clause_subject.from_cover = True  # ("a man stepped from behind a bus": he comes out)
+                        clause_subject.cover = clause_subject.cover or who
                 if role == "verb" and isinstance(who, _Actor) and after_verb:
                     who.acted_on = True  # ("the ego is overtaking a truck": the truck is in the scene)
                 if role == "verb" and isinstance(who, _Actor) and clause_subject == "ego" and motion.passes(prev):
@@ -2791,6 +2793,7 @@ def _read(text: str) -> Reading:
         ):
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
+        a.kerb_side = a.kerb_side or from_cover.side_of_the_cover(a, a.cover)
         spec.relation = _resolve_relation(a, r.map_kind, left_hand)
         spec.relation = sides.kerb_overtaker(
             spec.relation, behaviours, bool(a.side or a.kerb_side or a.lane_side), any(x.object_of is a for x in actors)

@@ -658,6 +658,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "lane", k + 1
     elif lanes_away(tokens, k):
         kind, k = "lane", k + 2 + (tokens[k + 2] == "over")  # ("two lanes (over) to our right": a lane there)
+    if kind is not None and k < n and tokens[k] in _LINKS:
+        tokens = kerb_side_said_plainly(tokens, _past_owner(tokens, k + 1), left_hand)
     sided = k < n and tokens[k] in _LINKS and _side_follows(tokens, k + 1)
     if kind == "place" and not sided and not _reversing(tokens, i):
         near = "left" if left_hand else "right"  # ("pulled out from the stop": beside the writer's near kerb)
@@ -686,6 +688,18 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             start, end, prep, (("kerb", None), ("place", place), ("lane_side", side), ("relation", f"roadside_{side}"))
         )
     return Said(start, end, prep, (("lane_side", side),))
+
+
+def kerb_side_said_plainly(tokens: list[str], m: int, left_hand: bool) -> list[str]:
+    """``tokens`` with a kerb side word at token ``m`` that ends a place's phrase ("a driveway on the
+    offside", "the side road on the nearside (left)") written as the plain side it names, a plain side
+    restated right after it winning. Why: a place is said on the nearside or offside as on the left
+    or right; read only with "left"/"right" there, a driveway on the offside was put at the near kerb."""
+    if m >= len(tokens) or tokens[m] not in _KERB_SIDES or tokens[m + 1 : m + 2] == ["of"]:
+        return tokens  # (not "on the offside of the van": a part of a vehicle)
+    restated = tokens[m + 1] if m + 1 < len(tokens) else ""  # ("on the offside (right)": the brackets gone)
+    side = _side(tokens[m], restated, left_hand, False)
+    return [*tokens[:m], side or tokens[m], *tokens[m + 1 :]]  # (as long as before: the ends said still hold)
 
 
 #: Prepositions a bare "nearside"/"offside" follows when it names a side of the ego ("up the nearside").
