@@ -77,6 +77,8 @@ FIRST = {
     "language_independent_z24.json": ((50, 50, 7, 43), "sealed for a round of reader work"),
     "language_independent_z25.json": ((50, 50, 17, 48), "sealed for a round of reader work"),
     "language_independent_z26.json": ((50, 50, 15, 48), "sealed for a round of reader work"),
+    "language_independent_z27.json": ((50, 50, 9, 47), "sealed for a round of reader work"),
+    "language_independent_z28.json": ((50, 50, 11, 40), "sealed for a round of reader work"),
 }
 
 

@@ -93,6 +93,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z24.json": (50, 8),
     ROOT / "tests" / "data" / "language_independent_z25.json": (50, 18),
     ROOT / "tests" / "data" / "language_independent_z26.json": (50, 15),
+    ROOT / "tests" / "data" / "language_independent_z27.json": (50, 10),
+    ROOT / "tests" / "data" / "language_independent_z28.json": (50, 12),
 }
 
 
