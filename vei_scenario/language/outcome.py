@@ -34,6 +34,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.normalise import lies_on_roads
+from vei_scenario.language.quantities import a_size
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
 
@@ -1200,8 +1201,6 @@ _EDGES_AND_LINES = _PLACES | _FURNITURE | frozenset(("edge", "line", "marking", 
 #: Nouns a road user's contact may land on besides road users: a vehicle's parts, a body's parts,
 #: and the furniture and places whose hits are read by their own rules.
 _MET_NOUNS = _VEHICLE_PARTS | _BODY_PARTS | _EDGES_AND_LINES
-#: What follows a unit when the length is a size, not a margin ("a 50 cm wide trailer").
-_SIZE_WORDS = frozenset(("wide", "long", "high", "tall", "deep", "across", "thick"))
 #: Words after "left" that make it a side, not what was left ("2 m left of the line", "left lane"); a
 #: verb after "left to" makes it a distance still to go ("200 m left to go").
 _LEFT_AS_SIDE = frozenset(("of", "on", "in", "lane", "turn", "side", "hand", "-hand", "for", "edge", "kerb"))
@@ -1221,7 +1220,7 @@ def _small_length_said(words: list[str], i: int, lead: list[str] | tuple[str, ..
     after = words[i + 1 : i + 3]
     if any(after[: len(b)] == b for b in _AT_MOST):
         return NEAR_MISS if metres <= 1.0 else None
-    if after[:1] and after[0] in _SIZE_WORDS:
+    if a_size(words, i, 1):
         return None  # ("with a 50 cm wide box on the back")
     if set(words[i + 1 : i + 5]) & _EDGES_AND_LINES:
         return None  # ("rode with 50 cm to the kerb", "stopped with 2 m left to the stop line": a place)

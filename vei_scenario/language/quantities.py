@@ -743,17 +743,22 @@ def lateral(tokens: list[str], i: int, used: int) -> bool:
     return (
         (bool(after) and after[0] in LATERAL_HEADS)
         or _subject_is_lateral(tokens, i)
-        or _off_a_flank(tokens, i + used)
+        or _off_a_flank(tokens, i, used)
         or _from_the_kerb(tokens, i + used)
         or _how_far_one_sees(tokens, i)
         or _clearance_of_a_pass(tokens, i)
     )
 
 
-def _off_a_flank(tokens: list[str], k: int) -> bool:
-    """Whether the words from ``k`` (after a length) say it off a vehicle's side ("1 m off the left side
-    of the van", "a foot off my wing mirror"): a passing margin across the road, not a gap ahead."""
-    return tokens[k : k + 1] == ["off"] and bool(_FLANKS & set(tokens[k + 1 : k + 5]))
+def _off_a_flank(tokens: list[str], i: int, used: int) -> bool:
+    """Whether the words after the length at ``i`` (``used`` tokens with its unit) say it off a vehicle's
+    side ("1 m off the left side of the van", "a foot off my wing mirror"), or from it after a verb of
+    passing ("came past a metre from my door", "passing a foot from my mirror"): a passing margin across
+    the road, as the room a pass is made "with", not a gap ahead."""
+    k = i + used
+    if not (tokens[k : k + 1] in (["off"], ["from"]) and _FLANKS & set(tokens[k + 1 : k + 5])):
+        return False
+    return tokens[k] == "off" or _a_pass_before(tokens, i)
 
 
 #: Words after a length that make it the size of a thing ("a 2 m wide trailer", "a pothole a foot deep").
@@ -774,16 +779,30 @@ def a_size(tokens: list[str], i: int, used: int) -> bool:
 
 #: How far back in its clause "visibility" may head a length ("visibility was down to about 50 m").
 _SEEING_REACH = 7
+#: Verbs (lemmas) "visibility" comes to a length with ("visibility was/dropped/was reduced to 50 m").
+_SEEING_VERBS = frozenset({"be", "reduce", "drop", "fall", "limit", "come", "get"})
+#: Words that open a new clause, whose length is no longer what the one before it governs.
+_NEW_CLAUSE = frozenset({"and", "but", "then", "when", "while", "whilst", "until"})
+
+
+def _finite_verb(word: str) -> bool:
+    """Whether ``word`` is only a verb ("braked", "ran", "pulled"; not "spray", "down", "being")."""
+    read = lemmas(word)
+    return bool(read.get("VERB")) and not set(read) - {"VERB", "AUX"}
 
 
 def _how_far_one_sees(tokens: list[str], i: int) -> bool:
     """Whether the length at ``i`` is what "visibility" comes to in its clause ("visibility was down to
-    about 50 m", "visibility in the spray under 40 m"): how far one sees, however it is put, no gap."""
+    about 50 m", "visibility in the spray under 40 m"): how far one sees, however it is put, no gap. Only
+    a length "visibility" governs: a new clause or another verb between them ("visibility was good and a
+    lorry braked 30 m ahead", "in poor visibility a car pulled out 20 m ahead") gives it to that verb."""
     for k in range(i - 1, max(i - 1 - _SEEING_REACH, -1), -1):
-        if tokens[k] in _STOPS or tokens[k] in (",", ";", ":"):
+        if tokens[k] in _STOPS or tokens[k] in (",", ";", ":") or tokens[k] in _NEW_CLAUSE:
             return False
         if tokens[k] == "visibility":
             return True
+        if _finite_verb(tokens[k]) and not set(lemmas(tokens[k])["VERB"]) & _SEEING_VERBS:
+            return False
     return False
 
 
@@ -806,10 +825,15 @@ def _clearance_of_a_pass(tokens: list[str], i: int) -> bool:
     k = i - 1
     while k >= 0 and (tokens[k] in _HEDGE_WORDS or tokens[k] in APPROXIMATORS or tokens[k] in GUESSES):
         k -= 1
-    if k < 0 or tokens[k] != "with":
-        return False
+    return k >= 0 and tokens[k] == "with" and _a_pass_before(tokens, k)
+
+
+def _a_pass_before(tokens: list[str], k: int) -> bool:
+    """Whether a verb of going past someone stands in the clause before ``k`` ("passed me with", "came
+    past me a foot from my mirror"), nearer than a verb of stopping or coming in ahead; not across "and",
+    "then" or "but" ("passed me and with 10 m between us it braked": the gap the new clause says)."""
     for j in range(k - 1, max(k - 1 - _PASS_REACH, -1), -1):
-        if tokens[j] in _STOPS or tokens[j] in (",", ";", ":"):
+        if tokens[j] in _STOPS or tokens[j] in (",", ";", ":") or tokens[j] in _NEW_CLAUSE:
             return False
         said = set(lemmas(tokens[j]).get("VERB", ()))
         if said & _AHEAD_VERBS:
@@ -819,10 +843,21 @@ def _clearance_of_a_pass(tokens: list[str], i: int) -> bool:
     return False
 
 
+#: Marks on the road and what stands at its edge that a length may be said from or before ("stopped a
+#: metre before the stop line", "2 m short of the zebra crossing"), besides the kerb itself.
+_MARKS = frozenset({"line", "lines", "crossing", "crosswalk", "lights", "bollard", "bollards", "island", "sign"})
+
+
 def _from_the_kerb(tokens: list[str], k: int) -> bool:
     """Whether the words from ``k`` (after a length) measure it from the kerb or the road's edge ("rode
-    a metre from the kerb", "2 m off the verge"): where a road user is across the road, no gap to the ego."""
-    return tokens[k : k + 1] in (["from"], ["off"]) and bool(KERB_NOUNS & set(tokens[k + 1 : k + 4]))
+    a metre from the kerb", "2 m off the verge"), or from or before a line, a crossing or a thing at the
+    edge ("stopped a metre before the stop line", "3 m short of the crossing"): where a road user is,
+    no gap to the ego."""
+    if tokens[k : k + 2] == ["short", "of"]:
+        k += 1
+    if tokens[k : k + 1] in (["from"], ["off"]) and KERB_NOUNS & set(tokens[k + 1 : k + 4]):
+        return True
+    return tokens[k : k + 1] in (["from"], ["before"], ["of"]) and bool(_MARKS & set(tokens[k + 1 : k + 5]))
 
 
 _COPULAS = frozenset({"is", "was", "are", "were", "'s"})
