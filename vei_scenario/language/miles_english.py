@@ -43,6 +43,8 @@ def said_in_miles_english(tokens: list[str]) -> bool:
 _TOWN_LIMITS = frozenset({"20", "30", "twenty", "thirty"})
 #: Words before a road called by its limit: where one is ("in a 30") or what a road is ("it's a twenty").
 _BEFORE_ROAD = frozenset({"in", "through", "is", "'s", "was"})
+#: The noun of an age before "old" ("a 30, 35 year old", "a twenty or so yrs old").
+_YEARS = frozenset({"year", "years", "yr", "yrs"})
 #: Words after which nothing more is said of the number: its phrase ends ("in a 30, so", "in the 30 when").
 _PHRASE_ENDS = frozenset(
     {"", ".", ",", ";", ":", "!", "?", ")", "-", "and", "but", "so", "when", "while", "as", "then", "with", "at"}
@@ -53,10 +55,15 @@ def road_called_by_its_limit(tokens: list[str]) -> bool:
     """Whether a road is called by its town limit's number alone in ``tokens`` (lowercased): "in a 30",
     "in the 30 last night", "it's a twenty," (see the module's docstring). Not where the number counts
     or measures the noun after it ("in a 30 zone", "in the 30 seconds", "a 20 tonne truck"): the word
-    after it ends the phrase or is no noun ("last", "yesterday" may be one, and are said as adverbs)."""
+    after it ends the phrase or is no noun ("last", "yesterday" may be one, and are said as adverbs).
+    Nor where it is an age, "year old" within the five words after it ("she was a 30, 35 year old
+    woman", "a twenty, maybe twenty-two year old bloke"; "in the 30 last year" is still the road)."""
     for k in range(1, len(tokens) - 1):
         if tokens[k] not in ("a", "the") or tokens[k - 1] not in _BEFORE_ROAD or tokens[k + 1] not in _TOWN_LIMITS:
             continue
+        after = tokens[k + 2 : k + 7]
+        if any(w.endswith("year-old") or (w in _YEARS and nxt == "old") for w, nxt in zip(after, after[1:] + [""])):
+            continue  # (an age: "was a 30, 35 year old")
         nxt = tokens[k + 2] if k + 2 < len(tokens) else ""
         said = lemmas(nxt)
         if nxt in _PHRASE_ENDS or ("NOUN" not in said and said) or "ADV" in said:

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from vei_scenario.language.discourse import CONTACT, PERCEIVE, is_singular
 from vei_scenario.language.ego import (
     AT_WHEEL,
     BE,
@@ -61,10 +62,9 @@ BEFORE_VERB = frozenset(
 #: Nouns of a road user's own space that another is placed by ("the path of the van", "the front of
 #: the cab", "the rear of the car").
 OWN_SPACE = frozenset({"path", "front", "rear", "back", "side", "nose", "way", "lane"})
-#: Articles that open a noun phrase (the object of a preposition: "behind a bicyclist").
-ARTICLES = DEFINITE | INDEFINITE
-#: Auxiliaries of the passive and an adverb between ("was struck", "got clipped", "had just been hit").
-PASSIVE_AUXILIARIES = BE | {"has", "had", "have", "got", "gets", "get", "just"}
+#: Auxiliaries, passive or perfect, and an adverb between, before a participle ("was struck", "got
+#: clipped", "had just been hit"); :data:`PASSIVE_VOICE` tells which of them make it passive.
+BEFORE_PARTICIPLE = BE | {"has", "had", "have", "got", "gets", "get", "just"}
 #: The auxiliaries that make the participle after them passive ("was hit", "got clipped"; "had hit" is
 #: active).
 PASSIVE_VOICE = BE | {"got", "gets", "get"}
@@ -155,10 +155,8 @@ def _struck(tokens: list[str], p) -> bool:
     """The mention is the subject of a verb of contact in the passive ("the car, proceeding on a green
     signal, was struck by a lorry", "Dad's car got rear-ended", "the van was clipped"): another road
     user acted on it, and a report puts what it is about first, as the subject it tells of."""
-    from vei_scenario.language.discourse import CONTACT
-
     k, last_auxiliary = _past_aside(tokens, p.end), ""
-    while k < len(tokens) and tokens[k] in PASSIVE_AUXILIARIES:
+    while k < len(tokens) and tokens[k] in BEFORE_PARTICIPLE:
         last_auxiliary = tokens[k] if tokens[k] != "just" else last_auxiliary
         k += 1
     if last_auxiliary not in PASSIVE_VOICE or k >= len(tokens) or tokens[k].endswith("ing"):
@@ -194,7 +192,9 @@ def _preposition_with_object(tokens: list[str], k: int) -> bool:
     nxt = tokens[k + 1 : k + 2]
     if nxt in (["of"], ["it"], ["him"], ["her"], ["them"]):
         return True
-    return tokens[k] == "behind" and bool(nxt) and nxt[0] in ARTICLES  # ("behind a bicyclist")
+    if tokens[k] != "behind" or not nxt:
+        return False
+    return nxt[0] in DEFINITE or nxt[0] in INDEFINITE  # ("behind a bicyclist": an article opens its object)
 
 
 def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list[_Referent], _Referent | None]:
@@ -260,8 +260,6 @@ def _narrator_only_watches(tokens: list[str]) -> bool:
     a van clip a cyclist", "we'd just seen ...", "I was outside the shop"): every "I"/"we" is the
     subject of a verb of perceiving, or is outside, and nothing puts the writer in the traffic ("me",
     "my", "us", "our"). Such a writer is a witness, and the report is about a vehicle in it."""
-    from vei_scenario.language.discourse import PERCEIVE
-
     said = [k for k, w in enumerate(tokens) if w in FIRST_PERSON]
     if not said or NARRATOR_INVOLVED & set(tokens):
         return False
@@ -293,8 +291,6 @@ def without_witness(tokens: list[str], dropped: list[str]) -> list[str]:
 def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     """``tokens`` with the vehicle a third-person report is about said "the ego" (see the module's
     docstring), and its bare driver too; unchanged where no vehicle stands out."""
-    from vei_scenario.language.discourse import is_singular
-
     if names_ego(tokens, kind_at, known):
         return tokens
     users = [p for p in road_users(tokens, kind_at, known) if p.kind != "ego"]

@@ -476,9 +476,10 @@ def clock_hour(tokens: list[str], i: int) -> bool:
     """Whether the bare number at ``i`` is a time of day: a clock with a dot after a word of time ("at
     approx 3.15", "around 7.30"), or a whole hour, 1 to 12, after a word of time ("at", "around", "by")
     with a part of the day right after it ("around 7 this morning", "at 9 last night") or within the
-    three words before it ("Today morning, around 7", "tonight around 10"). Why: an hour said so reads
-    like "at 7" of a speed, and one of a few km/h is the pace of no car; a speed is never written with
-    minutes."""
+    three words before it ("Today morning, around 7", "tonight around 10") and no verb of going right
+    before the number ("At lunchtime, doing about 12", "Around sundown, going just 10": speeds). Why:
+    an hour said so reads like "at 7" of a speed, and one of a few km/h is the pace of no car; a speed
+    is never written with minutes."""
     if i == 0 or tokens[i - 1] not in _BEFORE_HOUR:
         return False
     if _DOTTED_TIME.fullmatch(tokens[i]):
@@ -490,6 +491,11 @@ def clock_hour(tokens: list[str], i: int) -> bool:
         k += 1
     if k < len(tokens) and tokens[k] in _PARTS_OF_DAY:
         return True
+    j = i - 1
+    while j > 0 and (tokens[j] in APPROXIMATORS or tokens[j] in _HEDGE_WORDS):
+        j -= 1
+    if tokens[j] in _MOTION and tokens[j].endswith("ing"):
+        return False  # ("At lunchtime, doing about 12 through the car park": how fast one goes)
     return any(tokens[k] in _PARTS_OF_DAY for k in range(max(i - 4, 0), i - 1))
 
 
