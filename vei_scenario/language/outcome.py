@@ -35,6 +35,7 @@ from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
+from vei_scenario.language.who import TOWED
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
 
@@ -293,7 +294,7 @@ def _object_of(words: list[str], i: int) -> list[str]:
 _FURNITURE = frozenset(
     ("kerb", "curb", "kerbs", "bollard", "bollards", "lamppost", "lamp-post", "lamp", "post", "pole", "wall", "fence",
      "barrier", "railing", "railings", "tree", "hedge", "sign", "signpost", "verge", "ditch", "bin", "bench",
-     "guardrail", "gatepost", "pillar", "kerbstone")
+     "guardrail", "gatepost", "pillar", "kerbstone", "bridge", "parapet")
 )  # fmt: skip
 #: Ordinal suffixes the tokeniser splits from a street's number ("5th" -> "5 th").
 _ORDINALS = frozenset(("st", "nd", "rd", "th"))
@@ -363,12 +364,19 @@ def _meets_road_user(after: list[str]) -> bool:
     return True
 
 
-def names_a_thing(phrase: list[str]) -> bool:
+#: What a walker pushes or a vehicle tows (:data:`who.TOWED`), met as its road user is ("hit the pram",
+#: "the caravan").
+_PUSHED = TOWED | frozenset(("pram", "buggy", "pushchair", "stroller", "trolley", "cart", "wheelbarrow"))
+
+
+def names_a_thing(phrase: list[str], named: frozenset[str] = frozenset()) -> bool:
     """Whether the noun phrase opening ``phrase`` (its determiners already passed) has a head that
     English knows only as a noun of a thing: no road user, no part of a vehicle or a body, no street
-    furniture ("the sirens off", "my rating lol", "the radio"). A verb of contact with such an object
-    ("knocked the sirens off", "hit the indicator") handles a control or a possession, not another
-    road user. A word English does not know (a model's name: "the Qashqai") is no such noun."""
+    furniture, nothing pushed or towed ("the pram", "the caravan") ("the sirens off", "my rating lol",
+    "the radio"). A verb of contact with such an object ("knocked the sirens off", "hit the indicator")
+    handles a control or a possession, not another road user. A word English does not know (a model's
+    name: "the Qashqai") is no such noun, nor is one of ``named``, the words the reader named the
+    story's road users by ("a Golf pulled out ... I hit the Golf")."""
     head = None
     for w in phrase:
         found = _pos(w)
@@ -377,7 +385,9 @@ def names_a_thing(phrase: list[str]) -> bool:
             continue
         if ("NOUN" not in found and "ADJ" not in found) or w in _BREAK_WORDS or w in _PHRASE_ENDS:
             break
-        if _road_user_word(w) or w in _PERSON_OBJECTS or w in _MET_NOUNS or w.rstrip("s") in _MET_NOUNS:
+        if w in named or w in _PUSHED or _road_user_word(w) or w in _PERSON_OBJECTS:
+            return False  # ("I hit the Golf" after "a Golf pulled out": one of the story's road users)
+        if w in _MET_NOUNS or w.rstrip("s") in _MET_NOUNS:
             return False
         if lies_on_roads(w):
             return False  # ("struck the debris": an obstacle on the road, met)
@@ -410,12 +420,19 @@ def _modifies_a_noun(nxt: str) -> bool:
     return set(found) == {"NOUN"} and not _road_user_word(nxt) and nxt not in _PERSON_OBJECTS
 
 
-def _is_contact(words: list[str], i: int) -> bool:
-    """Whether the word at ``i`` states a contact between road users."""
+def _plural_of_contact(words: list[str], i: int) -> bool:
+    """Whether an "-es" plural of a contact noun ("crashes", "smashes") is a noun here, a count or a
+    determiner before it ("3 crashes"), not a verb after its subject ("the van crashes")."""
+    return words[i].endswith("es") and words[i][:-2] in _CONTACT_NOUNS and _plural_noun(words, i)
+
+
+def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -> bool:
+    """Whether the word at ``i`` states a contact between road users (``named``: the words the
+    story's road users were named by, see :func:`names_a_thing`)."""
     w = words[i]
     nxt = words[i + 1] if i + 1 < len(words) else ""
     prev = words[i - 1] if i > 0 else ""
-    if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS):
+    if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS) or _plural_of_contact(words, i):
         if w not in _CONTACT_NOUNS and _counted(words, i):
             return False  # ("47 reported collisions involving e-scooters last year": a statistic)
         if nxt in _COMPOUND_HEADS or prev in ("time-to", "eye") or w.startswith("time-to"):
@@ -509,7 +526,7 @@ def _is_contact(words: list[str], i: int) -> bool:
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
         obj = words[i + 1 : i + 7] + [""] * (len(words) <= i + 7)  # (its clause's end closes the phrase)
-        if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:]):
+        if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:], named):
             return False  # ("knocked the sirens off", "is this going to hit my rating")
         return _meets_road_user(_object_of(words, i))
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
@@ -660,21 +677,40 @@ _PLURAL_DETERMINERS = frozenset(("the", "these", "those", "some", "many", "sever
 
 def _plural_noun(words: list[str], i: int) -> bool:
     """Whether the -s form at ``i`` is a plural noun: a determiner or a number right before it ("the
-    clips I sent", "47 crashes"); a verb's -s form follows its subject ("the van clips her")."""
+    clips I sent", "47 crashes"); a verb's -s form follows its subject ("the van clips her"), and so
+    may a speed ("a van at 20 hits the ego": a number after "at" or "doing" counts nothing)."""
     w = words[i]
     if not w.endswith("s") or "NOUN" not in _pos(w) or i == 0:
         return False
-    return words[i - 1] in _PLURAL_DETERMINERS or _number(words[i - 1]) is not None
+    if _number(words[i - 1]) is not None:
+        return i < 2 or words[i - 2] not in _SPEED_BEFORE
+    return words[i - 1] in _PLURAL_DETERMINERS
+
+
+#: Words before a number that make it a speed, not a count ("at 20", "doing 30"; "about 40 crashes" is one).
+_SPEED_BEFORE = frozenset(("at", "doing"))
+
+
+#: Words that say a count of events is a record kept ("47 reported collisions", "per year", "involving").
+_RECORDED = frozenset(("reported", "recorded", "per", "year", "years", "annually", "involving", "involved", "since",
+                       "figures", "statistics", "stats"))  # fmt: skip
+
+
+def _past_verb(w: str) -> bool:
+    """Whether ``w`` is a verb's past form ("piled", "followed", "ran"), not its base, -s or -ing form."""
+    return _is_verb(w) and w not in _pos(w)["VERB"] and not w.endswith(("s", "ing")) and w not in _AUXILIARIES
 
 
 def _counted(words: list[str], i: int) -> bool:
     """Whether the plural noun of contact at ``i`` is counted by a number of two or more, its
     modifiers between ("47 reported collisions", "two recorded slight injury crashes"): a figure of
-    many events, a statistic, not this scene's outcome."""
+    many events, a statistic, not this scene's outcome. Said with a past verb after it and no word of a
+    record ("there were 3 crashes as the cars behind piled in", "4 collisions followed") they are
+    counted as they happen in the scene told."""
     for k in range(i - 1, max(-1, i - 5), -1):
         value = _number(words[k])
         if value is not None:
-            return value >= 2.0
+            return value >= 2.0 and (bool(set(words) & _RECORDED) or not any(map(_past_verb, words[i + 1 :])))
         if words[k] in _PHRASE_ENDS or words[k] in _BREAK_WORDS or words[k] in _NEGATORS:
             return False
     return False
@@ -1064,6 +1100,26 @@ def _near_noun(words: list[str], i: int) -> bool:
     return narrow or w == "near-miss"
 
 
+#: Words that set a road user apart as one standing by, not the one met ("the parked cars").
+_STANDING = frozenset(("parked", "stationary", "stopped", "queuing", "waiting"))
+
+
+def _clear_of_another(words: list[str], k: int) -> bool:
+    """Whether "clear" at ``k`` is "clear of" a place, a line, street furniture or a third party
+    ("1 m clear of the parked cars", "a metre clear of the stop line"): room from something else than
+    the one met, no margin between the two ("1 m clear of the test car", "1 m clear" are)."""
+    if words[k + 1 : k + 2] != ["of"]:
+        return False
+    obj = words[k + 2 : k + 7]
+    if set(obj) & _STANDING:
+        return True
+    for w in obj:
+        if w in _DETERMINERS or w in _POSSESSIVES or ("ADJ" in _pos(w) and "NOUN" not in _pos(w)):
+            continue
+        return w in _EDGES_AND_LINES or (w.endswith("s") and _road_user_word(w[:-1]))
+    return False
+
+
 def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) -> str | None:
     """A margin stated at ``i``: "with inches to spare", "stopped a foot short", "by a whisker",
     "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe. ``lead``: the words of
@@ -1121,7 +1177,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
         front = _relative_to_other(words, k)  # ("2 m in front of us", "a metre ahead")
-        if words[k] == "clear" and not set(words[max(0, i - 3) : i]) & _WIDE:
+        if words[k] == "clear" and not set(words[max(0, i - 3) : i]) & _WIDE and not _clear_of_another(words, k):
             metres = _length_said(words[max(0, i - 3) : i + 1])
             if metres is not None and metres <= 1.0:
                 return NEAR_MISS  # ("rider continued, approx 1 m clear": the clearance left, a metre or less)
@@ -1923,10 +1979,13 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
 def _supposed_event(words: list[str], i: int) -> bool:
     """Whether the noun of contact at ``i`` is the subject of a modal of supposition ("the impact
     would occur", "a collision could happen", "a crash might follow"): the event is supposed, not
-    told. Not "should" or "will": a test's "collision should happen" is the outcome it requires."""
+    told. Not "should" or "will": a test's "collision should happen" is the outcome it requires; nor
+    a modal perfect ("the crash could have killed my son", "the impact would have been worse"), which
+    supposes what the contact that happened did or might have been."""
     w = words[i]
     noun = w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS)
-    return noun and words[i + 1 : i + 2] != [] and words[i + 1] in _MODALS - {"should"}
+    perfect = words[i + 2 : i + 3] in (["have"], ["'ve"])
+    return noun and words[i + 1 : i + 2] != [] and words[i + 1] in _MODALS - {"should"} and not perfect
 
 
 def _near_enough(words: list[str], i: int) -> bool:
@@ -2101,9 +2160,10 @@ def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> 
     ]
 
 
-def outcome_cues(said: str) -> list[Cue]:
+def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
-    spaces, contractions as "did not"), in text order."""
+    spaces, contractions as "did not"), in text order; ``named``: the head words the reader named the
+    story's road users by ("golf" of "a Golf pulled out"), none of them a thing hit."""
     tokens = _fields_answered(said.split())
     story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
     cues: list[Cue] = []
@@ -2154,7 +2214,7 @@ def outcome_cues(said: str) -> list[Cue]:
             ):
                 add("hedged")  # ("a split second from ploughing into the back of her")
                 continue
-            if _is_contact(words, i):
+            if _is_contact(words, i, named):
                 kind = _contact_kind(words, i, clause, sentence)
                 if kind is not None:
                     add(kind)
@@ -2251,6 +2311,8 @@ def outcome_cues(said: str) -> list[Cue]:
                 add("unharmed")  # ("no harm done": how it ended, not how close it was)
             elif w in _TROUBLE and words[max(0, i - 2) : i] == ["do", "not"]:
                 pass  # ("don't worry": said to the reader, not of the scene)
+            elif w in _TROUBLE | _FUSS and set(whole[at + i + 1 : at + i + 3]) & _UNTIL:
+                pass  # ("zero issues until a van pulled out": trouble came after)
             elif w in _TROUBLE and (_denied_before(words, i) or _scoped(words, i, ("without", "zero"), 1)):
                 add("safe")  # ("no issues", "zero drama")
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
@@ -2293,7 +2355,7 @@ def outcome_cues(said: str) -> list[Cue]:
                 or (words == ["clear"] and ends_sentence and not sky)
             ):
                 add("safe" if w in ("clean", "clear") else "close")  # (a one-word verdict: "Clean.", "but close")
-            if _is_verb(w) and _planned_reaction(words, i):
+            if _is_verb(w) and _planned_reaction(words, i, whole[at + i + 1 :]):
                 add("yield")  # ("detected early, decelerated smoothly", "moved out early": no one forced)
             if _is_verb(w) and _hindsight(words, i):
                 pass  # ("I should have waited": what was not done)
@@ -2424,13 +2486,19 @@ _EASING = frozenset(("slow", "decelerate", "ease", "move", "steer", "detect"))
 _PLANNED = frozenset(("early", "smoothly", "gradually", "progressively", "gently"))
 
 
-def _planned_reaction(words: list[str], i: int) -> bool:
+def _planned_reaction(words: list[str], i: int, later: list[str] | tuple[str, ...] = ()) -> bool:
     """Whether the finite verb at ``i`` is a reaction made early or smoothly: a verb of easing off,
     making room or perceiving with such an adverb in the words after it ("detected early",
     "decelerated smoothly to 5 km/h", "moved out to lane 2 early", "spotted him early"). Whoever
     makes it, a reaction in good time is no escape: giving way, a safe pass unless more is said. Not
-    denied, not a participle ("slowing gently" says how it went on) nor under a condition."""
+    denied, not a participle ("slowing gently" says how it went on) nor under a condition, nor with a
+    hard brake or a swerve later in its sentence (``later``: "moved into my lane early and then
+    slammed on its brakes")."""
     w = words[i]
+    if any(_is_verb(x) and _lemmas(x) & _EVADE for x in later) or (
+        set(later) & _HARD and any(_lemmas(x) & _BRAKE for x in later)
+    ):
+        return False
     if w.endswith("ing") or not _lemmas(w) & (_EASING | _PERCEIVING) or _denied_before(words, i):
         return False
     if i > 0 and (words[i - 1] in _DETERMINERS or words[i - 1] in _POSSESSIVES):
@@ -2528,6 +2596,10 @@ def _sign_off(words: list[str], i: int) -> bool:
 
 #: The nouns "safe" qualifies in an instruction about spacing ("keep safe distance", "stay safe gap").
 _SPACING = frozenset(("distance", "gap", "margin", "clearance", "speed", "pass", "space", "room", "berth", "following"))
+
+
+#: Words after "no issues" that say trouble came after all ("no issues until a van pulled out").
+_UNTIL = frozenset(("until", "till", "til", "then"))
 
 
 #: Words that say the pass was safe, wherever they stand ("passes safely", "a comfortable pass").

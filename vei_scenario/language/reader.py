@@ -408,8 +408,8 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     out = []
     found = (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text)
     for k, tok in enumerate(found):
-        if tok.endswith("'d") and len(tok) > 2 and found[k + 1 : k + 2] == ["have"]:
-            out += [tok[:-2], "would"]  # ("I'd have hit him": "'d have" is "would have", never "had have")
+        if tok.endswith("'d") and len(tok) > 2 and found[k + 1 : k + 2] == ["have"] and found[k + 2 : k + 3] != ["to"]:
+            out += [tok[:-2], "would"]  # ("I'd have hit him": "would have"; not "I'd have to say": a manner of saying)
         elif tok.endswith("'s") and len(tok) > 2:
             out += [tok[:-2], "'s"]
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
@@ -2896,7 +2896,8 @@ def _read(text: str) -> Reading:
     r.ego_speed_mps = ego_said if ego_said is not None else r.ego_speed_mps
     r.ignored = list(dict.fromkeys(ignored))
     r.read_as = read_as
-    cues = outcome_cues(said)
+    user_names = proper_names(text) | {a.word.split()[-1] for a in actors if a.word}  # ("I hit the Golf": no thing)
+    cues = outcome_cues(said, frozenset(user_names))
     sudden = any(  # ("shot out", "suddenly"; not going on as it was: "just carried on alongside")
         b[2] == "dangerous" and b[0] not in _GOING_ON for a in r.actors for b in a.behaviours
     )
