@@ -14,14 +14,14 @@ two lorries", "a man stood behind a van": "from" or "out" must govern the prepos
 move the text does say (overtakes, stops, goes along the kerb, waits): only a bare going on is mended.
 
 The cover itself stands. A vehicle said to be parked or standing that someone comes out from behind or
-between ("from between two parked cars", "out from behind a stationary lorry") is told for who comes
-out of it: it is scenery at the kerb, and whatever else the reader hung on it was said of someone
-else (the ego named by the cover's kind: "the taxi stopped just in time"; a remark about the road).
-It stands there, at speed 0; a speed hung on it with a braking ("the coach was doing 30 mph and it
-braked hard") was the ego's, and is the ego's where the ego has none. A parked vehicle that is no
-one's cover keeps its own moves ("a parked car pulled out"), and so does cover the text does not call
-parked or standing ("from behind a bus that was pulling away"); where the reader found no one but the
-cover, what it hung on the cover is all it read of the story, and it is left alone.
+between ("from between two parked cars", "out from behind a stationary lorry") is told for who comes out
+of it: it is scenery at the kerb, and whatever else the reader hung on it was said of someone else (the
+ego named by the cover's kind: "the taxi stopped just in time"; a remark about the road). It stands
+there, at speed 0; a speed hung on it ("the coach was doing 30 mph and it braked hard") was the ego's,
+and is the ego's where the ego has none. A parked vehicle that is no one's cover keeps its own moves ("a
+parked car pulled out"), and so does cover the text does not call parked or standing ("from behind a bus
+that was pulling away"); where the reader found no one but the cover, what it hung on the cover is all
+it read of the story, and it is left alone.
 """
 
 from __future__ import annotations
@@ -102,10 +102,6 @@ class _Cover(Protocol):
     stationary: bool
 
 
-#: What a vehicle does when it brakes: hung on standing cover, it is the ego's stop for the one who comes out.
-_BRAKING = frozenset(("stop", "sudden_stop", "change_speed"))
-
-
 def _standing_cover(a: _Cover) -> bool:
     """Whether road user ``a`` is a vehicle said to be parked or standing that someone comes out from
     behind or between: cover, which stands at the kerb the whole time."""
@@ -116,8 +112,8 @@ def cover_stands(actors: list, reading: Reading) -> None:
     """Make every road user of ``reading`` that is standing cover (gathered as ``actors``, in the same
     order; see the module) stand: it stops, at speed 0, parked at the kerb (its start is cleared for
     the parked ones' side). Only where someone else than cover is read: the one it hides. A speed hung
-    on it with a braking is the ego's, where the ego has none: it is what the ego does for the one
-    who comes out ("the taxi was doing 30 and stopped just in time", the taxi read as the cover)."""
+    on it is the ego's, where the ego has none: it is what the ego does for the one who comes out
+    ("the taxi was doing 30 and stopped just in time", the taxi read as the cover)."""
     if all(_standing_cover(a) for a in actors):
         return  # (no one but the cover: what it carries is all that was read)
     for a, spec in zip(actors, reading.actors):
@@ -128,12 +124,12 @@ def cover_stands(actors: list, reading: Reading) -> None:
 def stand_at_the_kerb(a: _Cover, spec: ActorSpec, reading: Reading) -> None:
     """Make road user ``spec`` (gathered as ``a``) of ``reading`` stand parked at the kerb: it stops, at
     speed 0 (its start is cleared for the parked ones' side). What the reader hung on it was said of
-    someone else; a speed with a braking is the ego's, where the ego has none (the ego's stop for the
-    one the parked vehicle hides)."""
+    someone else; a speed is the ego's, where the ego has none (with a braking: the ego's stop for the
+    one the parked vehicle hides; "past the parked lorries a cyclist swerved ... at 25 mph": the ego's
+    going past them)."""
     if stands_there(spec):
         return
-    brakes = any(b[0] in _BRAKING for b in spec.behaviours)
-    if brakes and reading.ego_speed_mps is None and spec.speed_mps:
+    if reading.ego_speed_mps is None and spec.speed_mps:
         reading.ego_speed_mps = spec.speed_mps
     spec.behaviours = [("stop", {}, None, "sequence")]
     spec.speed_mps = 0.0
@@ -146,6 +142,8 @@ class _Placed(Protocol):
     """What the reader gathered of where a road user is, as far as :func:`side_of_the_cover` reads it."""
 
     kind: str
+    parked: bool
+    stationary: bool
     relation: str | None
     side: str | None
     kerb_side: str | None
@@ -153,11 +151,14 @@ class _Placed(Protocol):
 
 
 def side_of_the_cover(who: _Placed, cover: _Placed | None) -> str | None:
-    """The kerb side a walker or rider who comes out from behind or between a road user said to stand at
-    a side of the road starts at: that side ("a van is parked on the left ... a child runs out from
-    behind the van"), where nothing places the walker itself. Why: the cover hides it from the ego
-    because they are at the same kerb; read alone, it was put at the writer's near kerb."""
+    """The kerb side a walker or rider who comes out from behind or between a road user said to stand
+    (parked or stationary) at a side of the road starts at: that side ("a van is parked on the left ...
+    a child runs out from behind the van"), where nothing places the walker itself. Why: the cover hides
+    it from the ego because they are at the same kerb; read alone, it was put at the writer's near kerb.
+    A vehicle going by ("a van on my left was turning into a driveway") stands at no kerb."""
     if cover is None or who.side or who.kerb_side or who.lane_side or cover.kind not in VEHICLES:
         return None
+    if not (cover.parked or cover.stationary):
+        return None  # ("a van on my left was turning into a driveway": going, it is at no kerb)
     where = cover.kerb_side or cover.side or (cover.relation or "").removeprefix("roadside_")
     return where if where in ("left", "right") else None

@@ -33,8 +33,10 @@ from vei_scenario.language.said_again import plural
 WALKERS_AND_RIDERS = frozenset(("pedestrian", "bicycle", "e-scooter", "motorcycle"))
 #: Determiners that count or bring in one new: a plural named with one (or a number) is counted.
 _COUNTING = frozenset(("a", "an", "another", "several", "both", "each", "every", "couple", "pair"))
-#: The modal auxiliaries by their lemmas ("should" is "shall"'s, "could" is "can"'s): a closed class.
-_MODAL_LEMMAS = frozenset(("can", "will", "shall", "may", "must", "ought"))
+#: The modal auxiliaries of what ought to or may be, by their lemmas ("should" is "shall"'s, "might" is
+#: "may"'s): said after a plural, what such ones ought to or may do. "Could" and "would" ("can"'s and
+#: "will"'s) tell what those ones could not or would not do then ("the joggers couldn't hear me and ran").
+_MODAL_LEMMAS = frozenset(("shall", "may", "must", "ought"))
 #: Words that set a plural apart from the one in the scene: "the other joggers" are others there.
 _APART = frozenset(("other", "others", "rest"))
 
@@ -62,7 +64,8 @@ def _many(a: _Named) -> bool:
 
 
 def _modal(word: str) -> bool:
-    """Whether ``word`` is a modal auxiliary ("should", "could", "must"; by its lemma)."""
+    """Whether ``word`` is a modal auxiliary of what ought to or may be ("should", "must", "might"; by
+    its lemma); "could" and "would" are not (see :data:`_MODAL_LEMMAS`)."""
     return bool(set(lemmas(word).get("AUX", ())) & _MODAL_LEMMAS)
 
 

@@ -8,11 +8,13 @@ of the next clause it was joined to as a subject, a side road it was read as wai
 next to it) was said of someone else. It stands parked at the kerb, as cover does
 (:func:`from_cover.stand_at_the_kerb`).
 
-Parked is said of the plural inside its noun phrase ("the parked vans", "two parked cars") or right after
-its noun ("cars parked both sides", "vans were parked there"). A row of which a move is said, with a verb
-right after its name ("two parked vans pulled out"), keeps its moves; so does one parked vehicle ("a
-parked car pulled out": read where the reader reads cover and the kerb). Where the reader found no one
-but parked rows, what it hung on them is all it read of the story, and it is left alone.
+Parked is said of the plural inside its noun phrase ("the parked vans", "two parked cars") or right
+after its noun ("cars parked both sides", "vans were parked there"). A row of which a move is said, with
+a verb right after its name, or past an adverb ("two parked vans pulled out", "the parked vans then
+started up", "two parked cars both pulled out"), or said of one of them ("the parked cars, one of which
+then pulled out"), keeps its moves; so does one parked vehicle ("a parked car pulled out": read where
+the reader reads cover and the kerb). Where the reader found no one but parked rows, what it hung on
+them is all it read of the story, and it is left alone.
 """
 
 from __future__ import annotations
@@ -29,6 +31,10 @@ from vei_scenario.language.said_again import plural
 _PARKED = "parked"
 #: How many words of a noun phrase may stand between its state and its noun ("two parked tour buses").
 _PHRASE_REACH = 3
+#: How many adverbs may stand between a row and the verb of its move ("suddenly", "then", "slowly").
+_ADVERB_REACH = 2
+#: Words that say a move is the whole row's, between its name and its verb ("both pulled out").
+_THE_ROW = frozenset(("all", "both", "each"))
 
 
 class _Row(Protocol):
@@ -69,13 +75,30 @@ def _parked_after(tokens: list[str], end: int) -> bool:
     return after[:1] == [_PARKED] or (len(after) == 2 and after[0] in BE and after[1] == _PARKED)
 
 
+def _verb_at(tokens: list[str], k: int) -> int | None:
+    """Where the verb is that follows from ``k`` past up to two adverbs or words of the whole row
+    ("suddenly pulled out", "then started up", "both pulled out"), or None where no verb follows."""
+    for j in range(k, min(k + _ADVERB_REACH + 1, len(tokens))):
+        forms = lemmas(tokens[j])
+        if "VERB" in forms and "NOUN" not in forms:
+            return j
+        if tokens[j] not in _THE_ROW and "ADV" not in forms:
+            return None
+    return None
+
+
 def _moves_next(tokens: list[str], end: int) -> bool:
     """Whether a verb follows the noun ending at ``end``: a move said of it as its subject ("two parked
-    vans pulled out"). "Parked" itself is its state, not a move."""
+    vans pulled out", "two parked cars suddenly pulled out", "the parked vans then started up"), or of
+    one of them ("the parked cars, one of which then pulled out"). "Parked" itself is its state, not a
+    move; nor is being or having something ("one of which was a taxi")."""
     if end >= len(tokens) or tokens[end] == _PARKED:
         return False
-    forms = lemmas(tokens[end])
-    return "VERB" in forms and "NOUN" not in forms
+    k = end + (tokens[end] == ",")
+    if tokens[k : k + 2] == ["one", "of"] and tokens[k + 2 : k + 3] in (["which"], ["them"]):
+        j = _verb_at(tokens, k + 3)
+        return j is not None and tokens[j] not in BE and "have" not in lemmas(tokens[j]).get("VERB", ())
+    return _verb_at(tokens, end) is not None
 
 
 def parked_row(a: _Row, tokens: list[str]) -> bool:

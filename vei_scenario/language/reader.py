@@ -1416,8 +1416,9 @@ _CYCLIST_PASSES_MPS = 9.7
 def _at_a_motorbikes_pace(a: _Actor, ego_mps: float | None) -> bool:
     """Whether road user ``a``, named only "bike" or "biker", goes at a motorbike's pace, not a pedal
     cycle's: faster than a cyclist rides, or coming past the ego ("overtook me", "came from behind and
-    cut in") while the ego drives faster than a cyclist can keep up with."""
-    if a.word not in _EITHER_BIKE:
+    cut in") while the ego drives faster than a cyclist can keep up with. An e-bike ("e" before "bike":
+    "a kid on one of them e-bikes") is a pedal cycle's word however fast it goes."""
+    if a.word not in _EITHER_BIKE or a.named_after == "e":
         return False
     if a.speed_mps is not None and a.speed_mps > _CYCLIST_TOP_MPS:
         return True
