@@ -1043,14 +1043,89 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
     while i + 1 < len(out):
         found = kind_at(out, i)
         n = found[1] if found is not None and found[0] == "ego" and out[i] not in PRONOUNS_EGO else 0
+        end = None
         if n and i + n < len(out) and out[i + n] == ",":
             end = apposition_end(out, i + n, kind_at, known, most=5)
             end = _definite_apposition_end(out, i + n, kind_at, known) if end is None else end
-            if end is not None:
-                dropped.extend(out[i + n + 1 : end])
-                del out[i + n : end]
+        name = i - (i > 0 and out[i - 1] in DEFINITE)  # (where the ego's name starts: "the ego")
+        before = _vehicle_before_ego(out, name, i + n, kind_at, known) if n and end is None else None
+        if end is not None:
+            names = _vehicle_names(out, i + n, end, kind_at, known)
+            dropped.extend(out[i + n + 1 : end])
+            del out[i + n : end]
+            out = _named_again_as_ego(out, i + n, names, kind_at, known, dropped)
+        elif before is not None:
+            names = _vehicle_names(out, before, name - 1, kind_at, known)
+            dropped.extend(out[before : name - 1])
+            del out[before:name]  # ("a silver Tesla, the ego, rolls up": the ego, said once)
+            i = before + i - name
+            out = _named_again_as_ego(out, i + n, names, kind_at, known, dropped)
         i += max(n, 1)
     return out
+
+
+def _vehicle_names(tokens: list[str], start: int, end: int, kind_at: KindAt, known: Known) -> tuple[str, set[str]]:
+    """The kind of the vehicle said between ``start`` and ``end`` and the words of its noun ("a dark
+    blue Passat": car, {"passat"}; "a red Polo car": car, {"polo", "car"}): what a later "the
+    <noun>" repeats of it. Empty where no vehicle's noun is there."""
+    phrases = [p for p in road_user_phrases(tokens[:end], kind_at, known) if p.start >= start]
+    vehicle = next((p for p in reversed(phrases) if p.kind in VEHICLES), None)
+    return ("", set()) if vehicle is None else (vehicle.kind, set(tokens[vehicle.head : vehicle.end]))
+
+
+def _vehicle_before_ego(tokens: list[str], i: int, end: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where a vehicle said just before the ego's name (from ``i`` up to ``end``) starts, when the
+    ego's name stands in apposition to it ("A silver Tesla, the ego, rolls up", "A red Polo, the
+    subject vehicle, travels ..."): the vehicle, with "a"/"an", opens its sentence and ends at the
+    comma before the ego's name, and a comma closes the name with no list after it ("a van, the ego,
+    and a cyclist" is a list). The two name one vehicle, the ego."""
+    if (
+        i < 2
+        or tokens[i - 1] != ","
+        or tokens[end : end + 1] != [","]
+        or tokens[end + 1 : end + 2] in (["and"], ["or"])
+    ):
+        return None
+    phrases = road_user_phrases(tokens[: i - 1], kind_at, known)
+    p = phrases[-1] if phrases else None
+    if p is None or p.kind not in VEHICLES or p.end != i - 1 or p.det not in ("a", "an"):
+        return None
+    return p.start if p.start == 0 or tokens[p.start - 1] in SENTENCE_END | {":"} else None
+
+
+def _named_again_as_ego(tokens: list[str], start: int, names: tuple[str, set[str]], kind_at: KindAt, known: Known,
+                        dropped: list[str]) -> list[str]:  # fmt: skip
+    """``tokens`` with each later "the <noun>" that repeats the ego's own vehicle (``names``: its kind
+    and the words of its noun, "a blue Passat ... the Passat", "a red Polo car ... the car") said "the
+    ego", until a vehicle of that kind is brought in ("a Golf", "another van"): a definite noun
+    names again the one vehicle of its kind the text has introduced, and here that one is the ego.
+    One placed by someone ("the car ahead"), modifying a noun ("the car park") or owned ("the car's")
+    is not it."""
+    kind, words = names
+    out = list(tokens)
+    for p in reversed(
+        road_user_phrases(out[:start] + _until_one_is_new(out[start:], kind, kind_at, known), kind_at, known)
+    ):
+        said = out[p.head : p.end]
+        if p.start < start or p.kind != kind or p.det != "the" or not set(said) <= words:
+            continue
+        after = out[p.end : p.end + 1]
+        placed = set(after + out[p.start : p.head]) & (PLACED - {"in"}) or out[p.end : p.end + 2] == ["in", "front"]
+        if placed or after in (["'s"], ["of"]):
+            continue  # (someone else, or something of it: "the car ahead", "the oncoming car", "the car's")
+        if after and after[0].isalpha() and set(lemmas(after[0])) == {"NOUN"}:
+            continue  # (a modifier: "the car park")
+        dropped.extend(said)
+        out[p.start : p.end] = ["the", "ego"]
+    return out
+
+
+def _until_one_is_new(tokens: list[str], kind: str, kind_at: KindAt, known: Known) -> list[str]:
+    """``tokens`` up to the first vehicle of ``kind`` brought in as new ("a Golf", "another van")."""
+    new = next(
+        (p.start for p in road_user_phrases(tokens, kind_at, known) if p.kind == kind and p.det in INDEFINITE), None
+    )
+    return tokens if new is None else tokens[:new]
 
 
 #: What a report says after the noun of the vehicle it examines ("the Transit under examination",
