@@ -69,6 +69,7 @@ from vei_scenario.language import (
     sides,
     start_gap,
     stopped_short,
+    while_clause,
     whose_act,
     writer_on_foot,
 )
@@ -98,6 +99,7 @@ from vei_scenario.language.motion import (
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.no_ones_place import without_places_of_no_one
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters
+from vei_scenario.language.object_participle import participle_phrase
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.rear_end import rear_ender_behind
@@ -1882,8 +1884,13 @@ def _read(text: str) -> Reading:
     road_limit: float | None = None  # (the first of those: the ego's pace where nothing else gives one)
     opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
     opened.update(ego_speed.before_what_happened(scanned, speeds, road_users))  # ("On the M6 at 70 when ...")
+    named: list[tuple[_Actor | str, str]] = []
+    main_subject: _Actor | str | None = None  # the subject said before a "while" clause inside its sentence
     for link, mentions in clauses:
-        named: list[tuple[_Actor | str, str]] = []  # (actor, role) in order: subject, prep, verb, participle
+        if main_subject is not None and while_clause.goes_on_from_the_main_clause(mentions, named):
+            subject = main_subject  # ("a van pulled out while I was doing 40, then crawled along": the van)
+        main_subject = subject if while_clause.inside_its_sentence(link, mentions) else None
+        named = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
         added: list[tuple[_Actor, int]] = []  # behaviours added in this clause
         crit_here = next((m.value for m in mentions if m.slot == "criticality"), None)
@@ -2388,6 +2395,8 @@ def _read(text: str) -> Reading:
                 # "we drive behind a truck": where the truck is, seen from the ego, is the other way round
                 pending.append(replace(m, value=_SEEN_FROM_OBJECT[m.value]))
             else:
+                if m.slot == "speed":
+                    _participle_of_object(named, mentions[:k], m, scanned)  # ("across a cyclist approaching at 20")
                 who = _nearest(named, m)
                 if sides.owners_side(m, prev) and isinstance(clause_subject, _Actor) and who is not clause_subject:
                     who = clause_subject  # ("a van came from the Civic's right": the van's side, not the Civic's)
@@ -3932,6 +3941,18 @@ def _nearest(named, m):
             continue  # ("runs out between parked cars, 12 m ahead": where the one running out is)
         return who
     return None
+
+
+def _participle_of_object(named: list, before: list, m, tokens: list[str]) -> None:
+    """Make the road user named last before the speed ``m`` (``before``: its clause's mentions before it)
+    the owner of the participle phrase the speed is said in, where it is not its clause's subject
+    ("I turned across a cyclist approaching at 20 km/h": the cyclist's, see :mod:`object_participle`)."""
+    noun = next((x for x in reversed(before) if x.slot == "actor" and x.value != "ego"), None)
+    if noun is None or not participle_phrase(tokens, noun.end, m.start):
+        return
+    k = next((k for k in range(len(named) - 1, -1, -1) if isinstance(named[k][0], _Actor)), None)
+    if k is not None and named[k][1] != "subject":
+        named[k] = (named[k][0], "participle")
 
 
 def _subject_actor(named) -> bool:
