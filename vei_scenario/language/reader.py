@@ -38,6 +38,7 @@ from vei_scenario.language import (
     discourse,
     ego,
     ego_double,
+    ego_emerges,
     ego_speed,
     ego_turner,
     experiencer,
@@ -1852,6 +1853,7 @@ def _read(text: str) -> Reading:
     clauses = lane_moves.passing_each_other(clauses, scanned)  # (a meeting: no one overtakes)
     clauses = lane_moves.pulling_in_to_stop(clauses, scanned)  # ("the bus pulls in and stops": at the kerb)
     clauses = junctions.priority(junctions.crossings(clauses, scanned), scanned)
+    clauses = ego_emerges.main_road_has_the_way(clauses, scanned)  # ("I pulled out; a car came from the right")
     clauses, ego_follows = _ego_following(clauses)
     r = Reading()
     actors: list[_Actor] = []
