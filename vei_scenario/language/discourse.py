@@ -783,11 +783,12 @@ def _vehicle_phrase_at(tokens: list[str], k: int, kind_at: KindAt, known: Known)
 def _compound_head_at(tokens: list[str], k: int, known: Known) -> bool:
     """Whether the word at ``k`` is a noun that the vehicle's word before it only modifies ("a car seat",
     "a Tesco car uniform", "the van door", "a Nike car top"): a noun (or a word lemminflect calls an
-    adjective only, "top") in its own form that the reader has no phrase for (a verb it knows, "cut",
-    "stopped", goes on the sentence)."""
+    adjective only, "top") in its own form that the reader has no phrase for; a verb it knows ("cut")
+    or an inflected verb ("shot", "stopped") goes on the sentence."""
     w = tokens[k] if k < len(tokens) else ""
     forms = lemmas(w)
-    return w in (*forms.get("NOUN", ()), *forms.get("ADJ", ())) and not known(tokens, k)
+    inflected_verb = any(v != w for v in forms.get("VERB", ()))  # ("shot", "noted": a verb's past goes on)
+    return w in (*forms.get("NOUN", ()), *forms.get("ADJ", ())) and not inflected_verb and not known(tokens, k)
 
 
 def _occupant_at(tokens: list[str], i: int, n: int, kind_at: KindAt) -> bool:
