@@ -768,17 +768,48 @@ def _agent_noun(word: str) -> bool:
     return any(stem in lemmas(stem).get("VERB", ()) for stem in stems if len(stem) > 2)
 
 
+def _vehicle_phrase_at(tokens: list[str], k: int, kind_at: KindAt, known: Known) -> Phrase | None:
+    """The phrase of a motor vehicle that opens with its determiner at ``k`` ("the lorry ahead", "a
+    moped", "her car"), else None (also where the vehicle's word only modifies a noun: "a car seat")."""
+    if k >= len(tokens) or tokens[k] not in DETERMINERS:
+        return None
+    head = next((h for h in range(k + 1, min(k + 4, len(tokens))) if kind_at(tokens, h)), None)
+    q = _phrase_at(tokens, head, kind_at, known) if head is not None else None
+    if q is None or q.kind not in VEHICLES or q.start != k or _compound_head_at(tokens, q.end, known):
+        return None
+    return q
+
+
+def _compound_head_at(tokens: list[str], k: int, known: Known) -> bool:
+    """Whether the word at ``k`` is a noun that the vehicle's word before it only modifies ("a car seat",
+    "a Tesco car uniform", "the van door", "a Nike car top"): a noun (or a word lemminflect calls an
+    adjective only, "top") in its own form that the reader has no phrase for; a verb it knows ("cut")
+    or an inflected verb ("shot", "stopped") goes on the sentence."""
+    w = tokens[k] if k < len(tokens) else ""
+    forms = lemmas(w)
+    inflected_verb = any(v != w for v in forms.get("VERB", ()))  # ("shot", "noted": a verb's past goes on)
+    return w in (*forms.get("NOUN", ()), *forms.get("ADJ", ())) and not inflected_verb and not known(tokens, k)
+
+
+def _occupant_at(tokens: list[str], i: int, n: int, kind_at: KindAt) -> bool:
+    """Whether the person's noun of ``n`` words at ``i`` is said to sit in a vehicle ("the man in the
+    car", "a woman in a van"): a walker's noun (or an agent noun the reader has no phrase for) followed
+    by "in". A road user's own vehicle noun ("the van in the car park") is no one sitting."""
+    found = kind_at(tokens, i)
+    return tokens[i + n : i + n + 1] == ["in"] and (found is None or found[0] == "pedestrian")
+
+
 def _drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
-    """ "the driver of the lorry ahead", "the rider of a moped", "the van's driver": whoever is at the
-    wheel is the vehicle, one road user (said as the vehicle's phrase)."""
+    """ "the driver of the lorry ahead", "the rider of a moped", "the van's driver", "the man in the
+    car": whoever is at the wheel of a vehicle or sits in it is the vehicle, one road user (said as the
+    vehicle's phrase). A person in what is no motor vehicle ("a man in a wheelchair") is themselves."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
         n = _person_at(tokens, i, kind_at, known) if out and out[-1] in DETERMINERS else 0
-        if n and tokens[i + n : i + n + 1] == ["of"] and i + n + 1 < len(tokens) and tokens[i + n + 1] in DETERMINERS:
-            head = next((h for h in range(i + n + 2, min(i + n + 5, len(tokens))) if kind_at(tokens, h)), None)
-            q = _phrase_at(tokens, head, kind_at, known) if head is not None else None
-            if q is not None and q.kind in VEHICLES and q.start == i + n + 1:
+        if n and (tokens[i + n : i + n + 1] == ["of"] or _occupant_at(tokens, i, n, kind_at)):
+            q = _vehicle_phrase_at(tokens, i + n + 1, kind_at, known)
+            if q is not None:
                 out.pop()  # (the person's article)
                 i = q.start
                 continue
@@ -979,8 +1010,10 @@ def _ego_predicate(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
 
 #: Pronouns that speak of every or no person at all: what they "are" is a kind of person in general.
 EVERYONE = frozenset({"everyone", "everybody", "anyone", "anybody", "nobody", "noone", "none"})
+#: Modal verbs: what follows may happen, it is not told as what did.
+_MODAL_VERBS = frozenset("will would could might may must can should shall".split())
 #: Modal and negating words between such a pronoun and "be" ("anyone can be", "nobody is ever").
-_MODALS = frozenset({"can", "could", "will", "would", "may", "might", "should", "must", "not", "ever", "always"})
+_MODAL_OR_NEGATING = _MODAL_VERBS | {"not", "ever", "always"}
 
 
 def _what_everyone_is(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -996,7 +1029,7 @@ def _what_everyone_is(tokens: list[str], kind_at: KindAt, known: Known, dropped:
             i += 1
             continue
         j = i + (2 if out[i] == "no" else 1)
-        while j < len(out) and out[j] in _MODALS:
+        while j < len(out) and out[j] in _MODAL_OR_NEGATING:
             j += 1
         if j >= len(out) or out[j] not in BE:
             i = j
@@ -2335,7 +2368,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
     after it, as the reader reads "a silver Mokka car". Its place: after an article (and up to two
     colours or words the reader lacks), not after a preposition of place ("past the Odeon", "near the
     Crown") nor "on the", which names a road ("on the Westlink"), and ending the noun phrase: a verb, a
-    preposition, a punctuation mark or the end follow, not another name ("the Red Lion")."""
+    preposition, a punctuation mark or the end follow, not another name ("the Red Lion") nor a noun the
+    name only modifies ("a rider in a Deliveroo jacket", "a woman in a Tesco uniform")."""
     if not proper:
         return tokens
     out: list[str] = []
@@ -2362,7 +2396,8 @@ def _named_vehicles(tokens: list[str], kind_at: KindAt, known: Known, proper: fr
             continue  # (one listening: "she told the Echo", "speaking to the Post")
         nxt = tokens[i + 1] if i + 1 < len(tokens) else "."
         place = nxt in THINGS_FOR_VEHICLES  # ("out of the Engen garage": a place's brand, though "garage" is a verb)
-        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and not place and _verb_of(nxt))
+        verb = _verb_of(nxt) and not _compound_head_at(tokens, i + 1, known)  # (not "a Deliveroo jacket")
+        ends = nxt in PUNCT or nxt in PREPOSITIONS or (nxt not in proper and not place and verb)
         if ends and not (i and tokens[i - 1] in proper):
             out.append("car")
     return out
@@ -2513,8 +2548,6 @@ def picked_out(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[s
     return out
 
 
-#: Modal verbs: what follows may happen, it is not told as what did.
-_MODALS = frozenset("will would could might may must can should shall".split())
 #: Forms of "be" and "get" that make a present or future passive ("is hurt", "gets killed").
 _NOT_PAST_PASSIVE = frozenset({"is", "gets", "get", "be", "'s"})
 
@@ -2551,7 +2584,7 @@ def _harm_may_come(tokens: list[str], k: int, not_yet: bool) -> bool:
     happened yet, such a passive in the present ("before a child is hurt"). Other passives ("could be
     seen crossing") tell what is so."""
     nxt = tokens[k] if k < len(tokens) else ""
-    if nxt in _MODALS:
+    if nxt in _MODAL_VERBS:
         return tokens[k + 1 : k + 2] in (["be"], ["get"]) and _harmed_at(tokens, k + 2)
     return not_yet and nxt in _NOT_PAST_PASSIVE and _harmed_at(tokens, k + 1)
 
@@ -2591,7 +2624,7 @@ def what_may_happen(tokens: list[str], dropped: list[str]) -> list[str]:
         nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
         passive = nxt in _NOT_PAST_PASSIVE and _participle_next(tokens, i + 2)
         future = nxt in ("is", "'s") and tokens[i + 2 : i + 4] == ["going", "to"]  # ("is going to be killed")
-        if nxt in _MODALS or passive or future:
+        if nxt in _MODAL_VERBS or passive or future:
             dropped.append(w)
             continue
         out.append(w)
