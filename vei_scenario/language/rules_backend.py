@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import random
 
-from vei_scenario.language import lane_room
+from vei_scenario.language import closest_approach, lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
@@ -179,6 +179,14 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             spec_lateral = _u(rng, -0.9, 0.0)  # somewhere in the kerb half of the lane
         else:
             spec_lateral = spec.lateral_m
+        starts_at_m = spec.distance_m
+        if (
+            first.NAME == "along_road"
+            and starts_at_m is not None
+            and closest_approach.is_closest_approach(starts_at_m, TYPES["car"][0][0], TYPES[spec.kind][0][0])
+        ):  # ("went round him giving 2 m"): how near the ego came, kept as such; it starts where it would
+            first_cfg["gap_m"] = round(abs(starts_at_m), 3)
+            starts_at_m = None
         crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
         why = None
         if crossing and spec.distance_m is not None:
@@ -204,9 +212,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             if room > float(ego["distance_m"]):  # (within the road before the map's feature: a curve's is short)
                 before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
-        spawn, speed = place_adversary(
-            spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, spec.distance_m
-        )
+        spawn, speed = place_adversary(spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, starts_at_m)
         if first.NAME == "run_red_light" and relation.startswith("junction") and spec.distance_m is None:
             timed.add(name)
         if spec_lateral:
@@ -219,10 +225,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
                 facing = None  # it starts in its own lane and drifts over
         if facing == "against":
             spawn["facing"] = "against"
-        if first.NAME == "along_road" and spec.distance_m is None and spawn["relation"] == "behind":
+        if first.NAME == "along_road" and starts_at_m is None and spawn["relation"] == "behind":
             closing = max(speed - ego_speed, 1.0)  # (it comes up on the ego within a few seconds)
             spawn["longitudinal_m"] = -round(min(max(closing * _u(rng, 3.0, 5.0), 8.0), 40.0), 3)
-        elif first.NAME == "along_road" and spec.distance_m is None:
+        elif first.NAME == "along_road" and starts_at_m is None:
             closing = ego_speed + speed if facing == "against" else max(ego_speed - speed, 1.0)
             spawn["longitudinal_m"] = round(min(max(closing * _u(rng, 4.0, 6.0), 20.0), 200.0), 3)
         speed = min(max(speed, 0.0), MAX_SPEED_MPS)  # (within what the layers hold)

@@ -13,7 +13,12 @@ NAME = "along_road"
 AGENT = "route follower"
 SUMMARY = "Walk or ride along the ego's lane (with the traffic or towards it) at its own pace."
 DEFAULT_SPAWN = {"relation": "ahead"}
-PARAMETERS = {"hold_s": Parameter(8.0, 0.0, 120.0, "how long before what follows (s)")}
+PARAMETERS = {
+    "hold_s": Parameter(8.0, 0.0, 120.0, "how long before what follows (s)"),
+    # (what the text says of the encounter, kept for what the run is checked against; where it starts is
+    # its spawn: see vei_scenario.language.closest_approach)
+    "gap_m": Parameter(1.5, 0.0, 60.0, "how near the ego comes to it, passing or stopping behind it (m)"),
+}
 PROFILES: dict[str, dict[str, tuple[float, float]]] = {}
 #: Speeds when the text gives none (m/s): walking, cycling, riding an e-scooter.
 PACE_MPS = {"pedestrian": 1.4, "bicycle": 4.5, "e-scooter": 4.0}
