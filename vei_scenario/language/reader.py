@@ -81,6 +81,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.lemmas import lemmas as _lemmas
+from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
 from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english
 from vei_scenario.language.motion import (
@@ -102,6 +103,7 @@ from vei_scenario.language.no_ones_place import without_places_of_no_one
 from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters
 from vei_scenario.language.object_participle import participle_phrase
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
+from vei_scenario.language.phrasal_nouns import phrasal_compound
 from vei_scenario.language.reading import ActorSpec, NotUnderstood, Reading
 from vei_scenario.language.rear_end import rear_ender_behind
 from vei_scenario.language.route import ego_route, instruction_at, turn_taken_at
@@ -810,6 +812,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     framed: list[str] = []
     tokens = sides.place_sides_in_brackets(tokens)  # ("pulls out of stop (left)": on the left)
     tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
+    tokens = acts_said_as_nouns(tokens, _specific_act)  # ("made a sudden swerve into my lane": swerved)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
@@ -850,6 +853,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     while i < len(tokens):
         if (split := motion.manner_compound(tokens, i, _specific_behaviour)) is not None:
             tokens[i : i + 1] = split  # ("hard-brakes": "brakes hard")
+        elif (split := phrasal_compound(tokens, i, _specific_act, _act_of_a_road_user)) is not None:
+            tokens[i : i + 1] = split  # ("a turn-across": "turn across")
         tok = tokens[i]
         j = i - 1  # the word before, past a determiner ("in front of the ego": "of")
         while j > 0 and tokens[j] in _DETERMINERS:
@@ -1233,6 +1238,22 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             used = max(used, toward_at + 1 - i)
         i += used
     return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
+
+
+def _specific_act(tokens: list[str], i: int) -> int:
+    """How many words from ``tokens[i]`` the lexicon reads as a specific behaviour or a turn (0: none)."""
+    key = _best(tokens, i)
+    return len(key) if key and TABLE[key][0] == "turn" else _specific_behaviour(tokens, i)
+
+
+def _act_of_a_road_user(tokens: list[str], i: int) -> bool:
+    """Whether the noun at ``i`` is said as what a road user does: right after the road user's noun
+    ("oncoming van turn-across") or as the object of a light verb ("did a turn-across"), past its
+    determiner and describing words. Not a noun governed by a preposition of place ("at the
+    cross-over", "into the pull-in") nor one that names a heading ("Late cut-out."): that one is a
+    place, or the title of what is told after it."""
+    before = _word_before_phrase(tokens, i, lambda w: w in _DETERMINERS or _only_describes(w))
+    return (i > 0 and _actor_word(tokens[i - 1])) or bool(set(_lemmas(before).get("VERB", ())) & LIGHT_VERBS)
 
 
 def _specific_behaviour(tokens: list[str], i: int) -> int:
@@ -2664,8 +2685,9 @@ def _read(text: str) -> Reading:
             # a vehicle crossing the ego's road goes through a junction across its path
             a.behaviours = [("run_red_light", *b[1:]) if b[0] == "cross_in_front" else b for b in a.behaviours]
         elif a.kind in VEHICLES and "cross_in_front" in names and a.lane_side:
-            # a vehicle moving across from a lane: into the ego's (what it does next, if said)
-            rest = [b for b in a.behaviours if b[0] != "cross_in_front"]
+            # a vehicle moving across from a lane: into the ego's (what it does next, if said; going on
+            # after it, "didn't stop", "drove on", says nothing of its own)
+            rest = [b for b in a.behaviours if b[0] not in ("cross_in_front", "keep_going")]
             a.behaviours = rest or [("cut_in", *a.behaviours[0][1:])]
     r.ego_route = ego_route(tokens) or ego_route(scanned) or r.ego_route  # (a turn whose subject is the ego,
     # as written or as the ego is named once it is known: "Taxi (our driver) entering ... to go right")
