@@ -2597,6 +2597,8 @@ def _planned_reaction(words: list[str], i: int, later: list[str] | tuple[str, ..
         return False
     if w.endswith("ing") or not _lemmas(w) & (_EASING | _PERCEIVING) or _denied_before(words, i):
         return False
+    if _lemmas(w) & {"brake"} and words[i - 1 : i] in (["who"], ["which"], ["that"]):
+        return False  # ("saw a van cut in front of a cyclist, who braked gently": a scene only watched)
     if i > 0 and (words[i - 1] in _DETERMINERS or words[i - 1] in _POSSESSIVES):
         return False  # ("the move", "my slow start": a noun)
     if _scoped(words, i, _HYPOTHETICAL, 4) or _modal_perfect(words, i):
