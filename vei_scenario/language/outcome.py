@@ -135,8 +135,8 @@ _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "ve
 _EVADE = frozenset(
     ("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "wrench", "jam", "anchor")
 )
-_HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
-                   "full", "strongly", "abruptly"))  # fmt: skip
+_HARD = frozenset(("hard", "dead", "sharply", "sharp", "heavily", "suddenly", "firmly", "harshly", "violently",
+                   "emergency", "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
 #: What one brakes "like" when one brakes as hard as one can ("like mad", "like hell").
 _FURY = frozenset(("mad", "hell", "crazy", "anything", "fury", "billy-o"))
@@ -144,7 +144,7 @@ _MILD = frozenset(("gently", "softly", "lightly", "slightly", "normally", "smoot
 #: What a road user that gives way does (lemmas).
 _YIELD = frozenset(("wait", "yield", "give", "let", "hang", "hold", "pause"))
 #: Words after "let X": it goes, so the one who lets gives way ("let it pass", "let him go first").
-_LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "in", "out"))
+_LET_GO = frozenset(("pass", "go", "through", "by", "past", "first", "cross", "in", "out", "across", "over"))
 
 
 @lru_cache(maxsize=8192)
@@ -276,11 +276,43 @@ def _denied_before(words: list[str], i: int) -> bool:
     ("was unable to avoid the collision", "could not avoid him": it happened). A negation's scope ends
     at a wh-complement ("I don't know how I stopped in time": the stop happened), and an alternative
     set aside counts as denied ("instead of hitting him")."""
-    start = max((k + 1 for k in range(i) if words[k] in _WH_COMPLEMENT), default=0)
-    count = sum(1 for w in words[start:i] if w in _NEGATORS or w in _FAILING)
+    start = max((k + 1 for k in range(i) if words[k] in _WH_COMPLEMENT | {"if"}), default=0)
+    count = sum(
+        1 for k in range(start, i) if (words[k] in _NEGATORS or words[k] in _FAILING) and not _of_a_noun(words, k, i)
+    )
     count += sum(1 for w in words[max(start, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # ("avoid a crash")
     count += _forgone(words, i)
     return count % 2 == 1
+
+
+def _of_a_noun(words: list[str], k: int, i: int) -> bool:
+    """Whether the negator "not" at ``k`` denies only the possessed noun right after it, which ends
+    before ``i`` ("the driver behind, not our customer, rear-ended him", "it was not my fault he hit
+    me"): a noun phrase set aside, not the verb that follows it."""
+    return words[k] == "not" and words[k + 1 : k + 2] != [] and words[k + 1] in _POSSESSIVES and k + 2 < i
+
+
+#: Possessive pronouns that stand for a noun said before them ("his mirror took mine off").
+_OWN_ONES = frozenset(("mine", "ours"))
+
+
+def _part_said_before(words: list[str], i: int) -> bool:
+    """Whether the object of the verb at ``i`` is "mine" or "ours" standing for a vehicle's part named
+    before it in its clause ("the Range Rover's wing mirror takes mine clean off"): the narrator's own
+    part of that kind, met."""
+    return words[i + 1 : i + 2] != [] and words[i + 1] in _OWN_ONES and any(w in _VEHICLE_PARTS for w in words[:i])
+
+
+def _own_one(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` has the ego as its subject and "mine" or "ours" as its object with no
+    vehicle's part named before it ("I had to touch mine as well", after "you did brake"): the ego
+    handling its own control, which meets no road user."""
+    if words[i + 1 : i + 2] == [] or words[i + 1] not in _OWN_ONES or _part_said_before(words, i):
+        return False
+    j = i - 1
+    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
+        j -= 1
+    return j >= 0 and words[j] in _EGO_HEADS
 
 
 def _object_of(words: list[str], i: int) -> list[str]:
@@ -488,8 +520,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         return names_road_user(words[i + 1 : k] or words[k + 1 : k + 4])
     if lem & _PHRASAL_CONTACT and _is_verb(w) and _phrasal_object(words, i) and not _party_outing(words, i):
         return True  # ("took out a jogger", "knocked the child over")
-    if lem & _TOUCHING and _is_verb(w) and _vehicle_part(words[i + 1 : i + 6]):
-        return True  # ("caught my front bumper", "nicked the wing mirror of the taxi")
+    if lem & _TOUCHING and _is_verb(w) and (_vehicle_part(words[i + 1 : i + 6]) or _part_said_before(words, i)):
+        return True  # ("caught my front bumper", "nicked the wing mirror of the taxi", "his mirror took mine off")
     if lem & _TOUCHING and _is_verb(w) and _touched_with_a_part(words, i):
         return True  # ("caught it with my knee", "nicked me with its trailer")
     if prev in _COMPOUND_FIRST and _COMPOUND_FIRST[prev] in _lemmas(w) and _compound_verb(words, i):
@@ -525,6 +557,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
             return False  # ("put in speed bumps", "over the road bumps": the road's traffic calming)
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
             return False  # ("the booking website crashed", "my phone app crashed twice")
+        if _own_one(words, i):
+            return False  # ("you braked late, I had to touch mine": the ego's own pedal, no one met)
         obj = words[i + 1 : i + 7] + [""] * (len(words) <= i + 7)  # (its clause's end closes the phrase)
         if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:], named):
             return False  # ("knocked the sirens off", "is this going to hit my rating")
@@ -821,11 +855,13 @@ _PARTICLES = frozenset(("out", "over", "down"))
 _THROWN_RESULTS = frozenset(("flying", "sprawling", "spinning", "tumbling"))
 #: Verbs of touching that are a contact only when their object is a part of a vehicle ("caught my
 #: bumper"; not "caught sight of", "caught up with").
-_TOUCHING = frozenset(("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take", "nudge"))
+_TOUCHING = frozenset(
+    ("catch", "nick", "kiss", "brush", "touch", "clip", "scratch", "dent", "take", "nudge", "contact", "impact")
+)
 #: The parts of a vehicle (and of a bicycle) that a contact is said to touch.
 _VEHICLE_PARTS = _STRUCK_PARTS | _PARTS | frozenset(
     ("wheel", "pedal", "handlebar", "handlebars", "arch", "panel", "quarter", "corner", "headlight", "taillight",
-     "indicator", "tailgate", "sill", "fender")
+     "indicator", "tailgate", "sill", "fender", "basket")
 )  # fmt: skip
 #: Verbs of a motion only begun ("started drifting into me"): what it would have met, it did not yet.
 _BEGIN = frozenset(("start", "begin", "try", "attempt"))
@@ -898,7 +934,8 @@ def _vehicle_part(after: list[str]) -> bool:
     three modifiers, then the part ("my front bumper", "the wing mirror of the taxi")."""
     if not after or not (after[0] in _POSSESSIVES or after[0] in ("the", "a", "his", "her")):
         return False
-    for w in after[1:4]:
+    reach = 6 if "'s" in after[1:4] else 4  # ("my driver's side mirror": its owner's noun between)
+    for w in after[1:reach]:
         if w in _VEHICLE_PARTS or w.rstrip("s") in _VEHICLE_PARTS:
             return True
         if w in _PHRASE_ENDS:
@@ -1125,10 +1162,12 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
     "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe. ``lead``: the words of
     its sentence before its clause ("I stopped, what, two metres to spare": the stop it is said of)."""
     w = words[i]
+    if _ample_measure(words, i):
+        return SAFE  # ("with a good metre to spare", "went round me with a good 2 metres")
     spare = w == "spare" and i > 0 and (words[i - 1] == "to" or _length_unit(words[i - 1]))  # ("a metre spare")
     if spare:
         said = words[max(0, i - 6) : i - (words[i - 1] == "to")]
-        if set(said) & _WIDE or any(_vehicle_width(said, k) for k in range(len(said))):
+        if set(said) & (_WIDE | {"good"}) or any(_vehicle_width(said, k) for k in range(len(said))):
             return SAFE  # ("plenty to spare", "with a full car width to spare")
         metres = _length_said(said)
         stopped = _gap_ahead([*lead, *words[:i]][-12:])
@@ -1138,6 +1177,8 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         return NEAR_MISS if said else None
     if _vehicle_width(words, i) and set(words[max(0, i - 10) : i]) & _LEAVING:
         return SAFE  # ("leaving a full car's width", "gave him a car width", "with a whole lane's width")
+    if _one_length_after_a_stop(words, i):
+        return NEAR_MISS  # ("we stopped maybe a car's length from him", "stopped a car length back")
     gap = w in ("gap", "berth") and words[i + 1 : i + 2] not in (["in"], ["between"], ["for"])  # (not a place)
     if (w in ("clearance", "separation", "margin", "room", "space", "distance") or gap) and set(
         words[max(0, i - 3) : i]
@@ -1176,6 +1217,8 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         k = i + 1
         if words[k] == "or" and k + 2 < len(words):
             k += 2  # ("a metre or two from my bumper")
+        if words[k : k + 2] == ["away", "from"]:
+            k += 1  # ("stopped about a foot away from me")
         front = _relative_to_other(words, k)  # ("2 m in front of us", "a metre ahead")
         if words[k] == "clear" and not set(words[max(0, i - 3) : i]) & _WIDE and not _clear_of_another(words, k):
             metres = _length_said(words[max(0, i - 3) : i + 1])
@@ -1206,10 +1249,13 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
                 )
                 if metres <= 3.0:
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
+    if w in ("before", "back") and i > 0 and words[i - 1] in _WELL:
+        if any(_lemmas(x) & {"stop", "pull", "halt"} for x in words[max(0, i - 5) : i]):
+            return SAFE  # ("stopped well before him", "pulled up well back": a wide margin)
     if w == "short" and i > 0:
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
             # (by a wide margin: "well short", "comfortably short", "a long way short")
-            wide = words[i - 1] in ("well", "comfortably", "safely") or words[i - 2 : i] in (
+            wide = words[i - 1] in _WELL or words[i - 2 : i] in (
                 ["long", "way"],
                 ["good", "way"],
             )
@@ -1221,6 +1267,21 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: Adverbs that say a margin was wide ("well short", "comfortably back").
+_WELL = frozenset(("well", "comfortably", "safely"))
+
+
+def _ample_measure(words: list[str], i: int) -> bool:
+    """Whether the unit of length at ``i`` is said with "a good" right before its number or itself ("a
+    good 2 metres", "a good metre to spare", "still a good 10 metres away"): "good" before a measure
+    says it was ample, more than needed, however many metres it names. Not "a good few" (several),
+    nor a length from the kerb or a line (where someone is, not a margin)."""
+    if words[i] not in _UNIT_METRES or set(words[i + 1 : i + 5]) & _EDGES_AND_LINES:
+        return False
+    k = next((k for k in range(max(0, i - 2), i) if words[k - 1 : k + 1] == ["a", "good"]), None)
+    return k is not None and (k + 1 == i or _number(words[k + 1]) is not None)
 
 
 #: Verbs (lemmas) of stopping or of coming in ahead: a margin said after one is the gap left ahead,
@@ -1320,6 +1381,22 @@ def _vehicle_width(words: list[str], i: int) -> bool:
         return False
     article = next((j for j in range(k - 1, max(-1, k - 4), -1) if words[j] in ("a", "an", "one")), None)
     return article is not None and not set(words[max(0, article - 3) : article]) & _SHORT_OF
+
+
+#: Words that set a length from the one it is kept to ("a car length back", "a car's length from him").
+_KEPT_FROM = frozenset(("from", "back", "short", "behind", "away", "off"))
+
+
+def _one_length_after_a_stop(words: list[str], i: int) -> bool:
+    """Whether ``words[i]`` is "length" of one vehicle ("a car's length", "a car length", "one bus
+    length") that a stop left from someone ("we stopped maybe a car's length from him", "stopped a car
+    length back"): a vehicle's length is the least gap a stop is told in, so a near miss."""
+    k = i - 2 if words[i - 1 : i] == ["'s"] else i - 1
+    if words[i] != "length" or k < 1 or words[k].removesuffix("'s") not in _wide_heads():
+        return False
+    if words[k - 1] not in ("a", "one") or words[i + 1 : i + 2] == [] or words[i + 1] not in _KEPT_FROM:
+        return False
+    return any(_lemmas(x) & {"stop", "halt", "pull"} for x in words[max(0, k - 6) : k])
 
 
 #: Adjectives that call a margin enough ("adequate clearance", "a sufficient distance").
@@ -1938,6 +2015,21 @@ def _compelled(words: list[str], i: int) -> bool:
     return not _scoped(words, k, _UNREAL, 4)
 
 
+def _forced_stop(words: list[str], i: int) -> bool:
+    """Whether the compelled verb at ``i`` is a plain brake or stop not made in a queue ("had to stop
+    halfway", "the driver had to brake"; not "had to stop at the lights"): a stop the situation forced,
+    which is no giving way, however softly it was made."""
+    return _ego_acts(words, i) in ("brake", "stop") and not set(words[i + 1 : i + 5]) & _QUEUE
+
+
+def _hortative(words: list[str], i: int) -> bool:
+    """Whether "let" at ``i`` opens its clause with the narrator as its object ("Let us all take care",
+    "let's be careful out there", read as "let the ego ..."), the clause opening its sentence (see the
+    caller): an imperative of the first person plural, a wish said to the reader, not a road user let
+    through ("he stopped and let us go" has its subject)."""
+    return i == 0 and words[0] == "let" and words[1:3] in (["the", "ego"], ["us"])
+
+
 def _only_just(words: list[str], i: int) -> bool:
     """Whether "only" up to five words before the contact at ``i`` hedges it ("only just clipped him",
     "only narrowly missed", "the van only didn't hit me because ..."), not a contact made light of
@@ -2289,7 +2381,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 add("contact")  # ("CRUNCH.", "Thud.": the impact told by its sound, a sentence of its own)
                 continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
-                add("safe")  # ("All clear.")
+                add("safe" if w == "clear" else "unharmed")  # ("All clear."; "all fine": how it left them)
             if _miss(words, i):
                 add("contact" if _denied_before(words, i) else "near")  # ("did not miss him")
                 continue
@@ -2361,6 +2453,10 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 pass  # ("I should have waited": what was not done)
             elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
                 add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
+            elif _is_verb(w) and _compelled(words, i) and _forced_stop(words, i):
+                add("brake")  # ("had to stop halfway", "the driver had to brake": forced on its doer, no giving way)
+            elif clause.first_of_sentence and _hortative(words, i):
+                pass  # ("Let us all take care": a wish said to the reader, no one let through)
             elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
                 act = _ego_acts(words, i)
                 if act is None and _lets_another_go(words, i, whole[at + i + 1 :]):
@@ -2481,7 +2577,7 @@ def _road_user_evades(words: list[str], i: int) -> bool:
 
 
 #: Verbs (lemmas) of easing off or making room for another ("slowed", "decelerated", "moved over").
-_EASING = frozenset(("slow", "decelerate", "ease", "move", "steer", "detect"))
+_EASING = frozenset(("slow", "decelerate", "ease", "move", "steer", "detect", "brake"))
 #: Adverbs of a reaction made in good time and without force: planned, not forced.
 _PLANNED = frozenset(("early", "smoothly", "gradually", "progressively", "gently"))
 
@@ -2501,6 +2597,8 @@ def _planned_reaction(words: list[str], i: int, later: list[str] | tuple[str, ..
         return False
     if w.endswith("ing") or not _lemmas(w) & (_EASING | _PERCEIVING) or _denied_before(words, i):
         return False
+    if _lemmas(w) & {"brake"} and words[i - 1 : i] in (["who"], ["which"], ["that"]):
+        return False  # ("saw a van cut in front of a cyclist, who braked gently": a scene only watched)
     if i > 0 and (words[i - 1] in _DETERMINERS or words[i - 1] in _POSSESSIVES):
         return False  # ("the move", "my slow start": a noun)
     if _scoped(words, i, _HYPOTHETICAL, 4) or _modal_perfect(words, i):
