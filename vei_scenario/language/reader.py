@@ -1803,6 +1803,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     ):
         # (a rider cutting in from the cycle lane of a side said: from that lane; from a kerb: from its edge)
         return f"roadside_{side or near}"
+    if sides.pulls_out_from_the_kerb(vehicle, a.stationary, a.kerb_side, a.lane_side, first):
+        return f"roadside_{a.kerb_side}"  # ("a car parked at the kerb on the left pulled out": from that kerb)
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
@@ -2531,7 +2533,7 @@ def _read(text: str) -> Reading:
                         r.ego_speed_mps = m.value  # ("a kid shot out in front of me, hit him at 25": the narrator hit)
                     else:
                         _apply(m, who, r, link, added)
-                    if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions):
+                    if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions, scanned):
                         who.said.add("ego_behind")  # ("a bus in the left lane in front of us": the ego's lane)
                     if of_both:
                         r.ego_speed_mps = m.value
@@ -3861,20 +3863,24 @@ def _ego_named(prev) -> bool:
 _OF_THE_EGO = ("of me", "of us", "of the ego", "of ego")
 
 
-def _in_front_of_the_ego(m, nxt, behaviours: list, mentions: list) -> bool:
+def _in_front_of_the_ego(m, nxt, behaviours: list, mentions: list, tokens: list[str]) -> bool:
     """Whether relation mention ``m`` puts its road user in front of the ego itself ("in front of
-    me", "ahead of us", "ahead" then the ego named right after "of") said together with its lane,
-    next to it either side ("in the left lane right in front of us", "ahead of me in lane 1"), and
-    not where a cut-in or overtake ends (:func:`sides.where_it_ends`). Why: one place said twice, the
-    ego is in that lane too, behind it, as when the ego follows it (:func:`sides.lane_of_the_followed`);
-    a lane said apart from it ("the car in the lane to my right suddenly cuts across in front of
-    me") is where it was before it moved."""
+    me", "ahead of us", "ahead" then the ego named right after "of", or the ego told of as "her" or
+    "him": "the lorry in front of her in lane 1") said together with its lane, next to it either side
+    ("in the left lane right in front of us", "ahead of me in lane 1"), and not where a cut-in or
+    overtake ends (:func:`sides.where_it_ends`). Why: one place said twice, the ego is in that lane
+    too, behind it, as when the ego follows it (:func:`sides.lane_of_the_followed`); a lane said apart
+    from it ("the car in the lane to my right suddenly cuts across in front of me") is where it was
+    before it moved."""
     if m.slot != "relation" or m.value != "ahead" or sides.where_it_ends(m.value, behaviours):
         return False
+    right_after = nxt is not None and m.next_ == "of" and nxt.start == m.end + 1
     if m.words.endswith(_OF_THE_EGO):
         ego_end = m.end
-    elif m.next_ == "of" and nxt is not None and nxt.slot == "actor" and nxt.value == "ego" and nxt.start == m.end + 1:
+    elif right_after and nxt.slot == "actor" and nxt.value == "ego":
         ego_end = nxt.end
+    elif right_after and nxt.slot == "pronoun" and sides.told_of_the_ego(tokens, nxt.start):
+        ego_end = nxt.end  # ("in front of her": the ego a report tells of in the third person)
     else:
         return False
     lanes = (x for x in mentions if x.slot == "lane_side")
@@ -4109,7 +4115,7 @@ def _apply(m, who, r, link, added) -> None:
             a.followed = a.followed or (m.value == "ahead" and m.words in ("following", "tailing"))
             if m.value == "ahead" and m.words in ("following", "tailing", "behind"):
                 a.said.add("ego_behind")  # ("following a van", "we were behind a van": in the ego's lane)
-            if a.relation is None or m.value == "oncoming":
+            if a.relation is None or m.value == "oncoming" or sides.out_of_a_place_ahead(a.relation, m.value, a.place):
                 a.relation = m.value
         elif m.slot == "wrong_way":
             a.wrong_way = True

@@ -149,6 +149,26 @@ def waits_elsewhere(relation: object, prep: str, lane: str | None) -> bool:
     return lane is not None and prep in ("at", "in") and str(relation).startswith("roadside_")
 
 
+def out_of_a_place_ahead(relation: object, roadside: object, place: str | None) -> bool:
+    """Whether the roadside of a place a road user comes out of (``place``, its head noun: "pulled out
+    of a field gate on his left", "out of the stop") is where it starts though "ahead" or "in front"
+    was said of it first ("in front of me, a tractor pulled out of a gate on the left"): in front says
+    where it comes out, across the ego's way; the place says where it was before, beside the road. A
+    place it only waits or stops at ("the bus ahead stops at the stop on the right") is a landmark."""
+    return relation == "ahead" and place is not None and str(roadside).startswith("roadside_")
+
+
+def pulls_out_from_the_kerb(
+    vehicle: bool, stationary: bool, kerb_side: str | None, lane_side: str | None, first: str | None
+) -> bool:
+    """Whether a vehicle said to stand at a kerb of a side ("a car parked at the kerb on the left", "a
+    van stopped on the nearside kerb") and first to pull out into the ego's lane starts at that
+    roadside: beside the carriageway, not in a lane beside the ego's, which it would then have had to
+    be driving in. A parked car said only on a side ("a parked car on the right pulls out") keeps the
+    side's lane, and one in a lane said stays in it."""
+    return vehicle and stationary and kerb_side in ("left", "right") and lane_side is None and first == "cut_in"
+
+
 def _reversing(tokens: list[str], i: int) -> bool:
     """Whether the verb right before the phrase at token ``i`` (and its particle) is reversing ("backed
     out of", "reverses from"): one that backs out of a place is read into the lane it backs across,
@@ -311,8 +331,9 @@ class Said:
 #: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
 #: "nearside" is on, with or without a unit.
 _LEFT_HAND_WORDS = frozenset(
-    {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside"}
-)
+    {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside",
+     "pavement", "pavements", "footway", "footways"}
+)  # fmt: skip
 #: American road and car words (where a British writer says junction, saloon, people carrier, indicator,
 #: town centre, windscreen, slip road, wing): with miles per hour they tell a right-hand writer.
 _RIGHT_HAND_WORDS = frozenset(
@@ -658,6 +679,8 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
         kind, k = "lane", k + 1
     elif lanes_away(tokens, k):
         kind, k = "lane", k + 2 + (tokens[k + 2] == "over")  # ("two lanes (over) to our right": a lane there)
+    if kind is not None:
+        k = past_how_far_along(tokens, k)  # ("the lay-by ahead on the left": the lay-by's side)
     if kind is not None and k < n and tokens[k] in _LINKS:
         tokens = kerb_side_said_plainly(tokens, _past_owner(tokens, k + 1), left_hand)
     sided = k < n and tokens[k] in _LINKS and _side_follows(tokens, k + 1)
@@ -688,6 +711,22 @@ def phrase_at(tokens: list[str], i: int, left_hand: bool, ring: bool) -> Said | 
             start, end, prep, (("kerb", None), ("place", place), ("lane_side", side), ("relation", f"roadside_{side}"))
         )
     return Said(start, end, prep, (("lane_side", side),))
+
+
+#: Words that sharpen "ahead" said of a place ("just ahead", "up ahead", "further ahead").
+_BEFORE_AHEAD = frozenset({"just", "up", "further", "farther", "right", "directly", "immediately", "slightly"})
+
+
+def past_how_far_along(tokens: list[str], k: int) -> int:
+    """Token ``k`` moved past "ahead" said between a place and its side ("a lay-by ahead on the left",
+    "a field gate just ahead on the right", "the side road up ahead on our left"), when a side follows.
+    Why: "ahead" there says how far along the road the place is, and the side after it is still the
+    place's; read as the end of the place's phrase, the side was lost and a lorry waiting in a lay-by
+    on the left started in the lane on the left."""
+    m = k + (tokens[k : k + 1] != [] and tokens[k] in _BEFORE_AHEAD)
+    if tokens[m : m + 1] == ["ahead"] and tokens[m + 1 : m + 2] and tokens[m + 1] in _LINKS:
+        return m + 1 if _side_follows(tokens, m + 2) else k
+    return k
 
 
 def kerb_side_said_plainly(tokens: list[str], m: int, left_hand: bool) -> list[str]:
@@ -1321,9 +1360,10 @@ def starts_in_ego_lane(said: set) -> bool:
 
 def narrator_lane(clauses: list) -> list:
     """Clauses (link, mentions) with a lane said before anyone is named given to the ego, when the
-    first road user named after it has a lane of its own said right after it ("On the motorway in the
-    middle lane doing 60, a lorry in the inside lane wanders across": the middle lane is the
-    narrator's). One road user does not start in two lanes, and the writer drives in the first."""
+    first road user named after it has a lane or a place beside the road of its own said right after
+    it ("On the motorway in the middle lane doing 60, a lorry in the inside lane wanders across": the
+    middle lane is the narrator's; "in lane 1, I saw a lorry in the lay-by on the left": the lay-by is
+    the lorry's). One road user does not start in two places, and the writer drives in the first."""
     flat = [m for _, mentions in clauses for m in mentions]
     first = next((k for k, m in enumerate(flat) if m.slot in ("actor", "pronoun", "lane_side")), None)
     if first is None or flat[first].slot != "lane_side":
@@ -1331,8 +1371,8 @@ def narrator_lane(clauses: list) -> list:
     after = next((k for k in range(first + 1, len(flat)) if flat[k].slot in ("actor", "pronoun")), None)
     if after is None or flat[after].slot != "actor" or flat[after].value == "ego" or after + 1 >= len(flat):
         return clauses
-    if flat[after + 1].slot != "lane_side" or flat[first].end == flat[after].start:
-        return clauses  # (its lane is not said, or the first lane is the road user's: "middle-lane car")
+    if flat[after + 1].slot not in ("lane_side", "place") or flat[first].end == flat[after].start:
+        return clauses  # (its lane or place is not said, or the first lane is the road user's: "middle-lane car")
     lane = flat[first]
     ego = replace(lane, slot="actor", value="ego", words="ego", end=lane.start, next_=lane.words.split()[0])
     return [(link, [x for m in mentions for x in ((ego, m) if m is lane else (m,))]) for link, mentions in clauses]
