@@ -810,8 +810,11 @@ def _drivers(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
         if n and (tokens[i + n : i + n + 1] == ["of"] or _occupant_at(tokens, i, n, kind_at)):
             q = _vehicle_phrase_at(tokens, i + n + 1, kind_at, known)
             if q is not None:
-                out.pop()  # (the person's article)
+                det = out.pop()  # (the person's article)
                 i = q.start
+                if det in DEFINITE | {"this"} and tokens[q.start] in ("a", "an"):
+                    out.append(det)  # ("this guy in a red SUV": the one pointed back to, in its vehicle)
+                    i += 1
                 continue
         n = _person_at(tokens, i, kind_at, known)
         if n and len(out) >= 2 and out[-1] == "'s" and (kind_at(out, len(out) - 2) or ("", 0))[0] in VEHICLES:
