@@ -1763,3 +1763,6 @@ RETURNS = (
     "swing back",
     "return",
 )
+#: Two-word markers of an alternative set aside ("instead of squeezing past", "rather than hitting him"):
+#: what follows was not done.
+FORGONE = (["instead", "of"], ["rather", "than"])

@@ -230,14 +230,13 @@ _FAILING = frozenset(("unable", "fail", "fails", "failed", "failing"))
 #: Words that open a clause embedded as the object of a verb of knowing or saying ("don't know how I
 #: stopped", "no idea why he missed us"): a negation before one is of the knowing, not of what is known.
 _WH_COMPLEMENT = frozenset(("how", "why", "whether", "what"))
-#: Two-word markers of an alternative set aside ("instead of squeezing past", "rather than hitting him").
-_FORGONE = (["instead", "of"], ["rather", "than"])
 
 
-def _forgone(words: list[str], i: int) -> bool:
+def forgone(words: list[str], i: int) -> bool:
     """Whether the word at ``i`` is the alternative a clause sets aside ("waited instead of squeezing
-    past", "rather than hitting the scooter, he swerved"): what follows the marker was not done."""
-    return any(words[k : k + 2] in _FORGONE for k in range(max(0, i - 3), i - 1))
+    past", "rather than hitting the scooter, he swerved"; :data:`~vei_scenario.language.lexicon.FORGONE`):
+    what follows the marker was not done."""
+    return any(words[k : k + 2] in L.FORGONE for k in range(max(0, i - 3), i - 1))
 
 
 #: Modals of a counterfactual perfect ("would have", "could easily have", "might well have").
@@ -281,7 +280,7 @@ def _denied_before(words: list[str], i: int) -> bool:
         1 for k in range(start, i) if (words[k] in _NEGATORS or words[k] in _FAILING) and not _of_a_noun(words, k, i)
     )
     count += sum(1 for w in words[max(start, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # ("avoid a crash")
-    count += _forgone(words, i)
+    count += forgone(words, i)
     return count % 2 == 1
 
 
@@ -2370,7 +2369,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 and _is_verb(w)
                 and words[i + 1 : i + 2]
                 and words[i + 1] in _SQUEEZE_BY
-                and not _forgone(words, i)
+                and not forgone(words, i)
             ):
                 add("close")  # ("squeezed past", "squeezed through between us": a pass with no room)
                 continue
@@ -2531,7 +2530,7 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
     Not a participle ("a man waiting to cross" is where he is), a stay in a queue or at the lights
     (one's turn, not another's), nor a stay for something else ("waited for a gap")."""
     w = words[i]
-    if w.endswith("ing") or _denied_before(words, i) or _forgone(words, i):
+    if w.endswith("ing") or _denied_before(words, i) or forgone(words, i):
         return False  # ("waiting at the corner", "didn't wait for me", "instead of waiting")
     lem = _lemmas(w)
     if lem & _SIGNALLING:

@@ -4,8 +4,9 @@ what a road user did by that noun ("oncoming van turn-across at the junction", "
 front of me"). Written apart, the two words are the phrase the reader reads as that act.
 
 Only a compound said as a road user's act is read so: right after the road user's noun or as the
-object of a light verb ("made", "did", "pulled"). One that names a place ("into the pull-in", "at the
-cross-over") is the place, and one that heads a report ("Late cut-out.") is its title, told after it.
+object of a light verb ("made", "did", "pulled", "performed", "executed", "took"). One that names a place
+("into the pull-in", "at the cross-over", "in the bus pull-in") is the place, and one that heads a report
+("Late cut-out.") is its title, told after it.
 """
 
 from __future__ import annotations

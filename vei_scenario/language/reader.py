@@ -81,7 +81,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.lemmas import lemmas as _lemmas
-from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns
+from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
 from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english
 from vei_scenario.language.motion import (
@@ -812,7 +812,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     framed: list[str] = []
     tokens = sides.place_sides_in_brackets(tokens)  # ("pulls out of stop (left)": on the left)
     tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
-    tokens = acts_said_as_nouns(tokens, _specific_act)  # ("made a sudden swerve into my lane": swerved)
+    tokens = acts_said_as_nouns(tokens, _specific_act, _kind_at)  # ("made a sudden swerve into my lane": swerved)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
@@ -1198,8 +1198,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
         if slot == "stationary" and tok == "standing" and standing_names_a_kind(tokens, i):
             i += 1  # ("a standing e-scooter", "the standing kind": a scooter's kind, no state)
             continue
-        if slot == "behaviour" and whose_act.not_meant(tokens, i):
-            ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing": no act)
+        if slot == "behaviour" and (whose_act.not_meant(tokens, i) or set_aside(tokens, i)):
+            ignored.append(" ".join(tokens[i : i + len(key)]))  # ("no intention of crossing", "rather than swerve")
             i += len(key)
             continue
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
@@ -1250,10 +1250,14 @@ def _act_of_a_road_user(tokens: list[str], i: int) -> bool:
     """Whether the noun at ``i`` is said as what a road user does: right after the road user's noun
     ("oncoming van turn-across") or as the object of a light verb ("did a turn-across"), past its
     determiner and describing words. Not a noun governed by a preposition of place ("at the
-    cross-over", "into the pull-in") nor one that names a heading ("Late cut-out."): that one is a
+    cross-over", "into the pull-in"), past a road user's word that only names the place ("in the bus
+    pull-in"), nor one that names a heading ("Late cut-out."): that one is a
     place, or the title of what is told after it."""
-    before = _word_before_phrase(tokens, i, lambda w: w in _DETERMINERS or _only_describes(w))
-    return (i > 0 and _actor_word(tokens[i - 1])) or bool(set(_lemmas(before).get("VERB", ())) & LIGHT_VERBS)
+    describes = lambda w: w in _DETERMINERS or _only_describes(w)  # noqa: E731
+    before = _word_before_phrase(tokens, i, describes)
+    if i > 0 and _actor_word(tokens[i - 1]):  # (unless the road user's word names the place: "in the bus pull-in")
+        return _word_before_phrase(tokens, i - 1, describes) not in _PLACE_PREPOSITIONS
+    return bool(set(_lemmas(before).get("VERB", ())) & LIGHT_VERBS)
 
 
 def _specific_behaviour(tokens: list[str], i: int) -> int:

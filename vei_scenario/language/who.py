@@ -10,7 +10,14 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.lemmas import english, lemmas
-from vei_scenario.language.lexicon import ANIMALS, CAR_MAKES, SCOOTER_OPERATORS, THINGS_FOR_ANIMALS, TRUCK_MAKES
+from vei_scenario.language.lexicon import (
+    ANIMALS,
+    CAR_MAKES,
+    FORGONE,
+    SCOOTER_OPERATORS,
+    THINGS_FOR_ANIMALS,
+    TRUCK_MAKES,
+)
 
 #: First-person possessives, a closed class: what they own is the writer's, hence the ego.
 FIRST_PERSON_POSSESSIVES = frozenset({"my", "our"})
@@ -577,6 +584,8 @@ def _unnamed_subjects(
         for h in range(k, min(k + 3, len(words) - 1)):
             if road_user(lower[h]) or known(lower[h]) or lower[h] in _OPENING or rider_noun(lower[h - 1]):
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
+            if lower[h - 1 : h + 1] in FORGONE:
+                break  # ("rather than swerve": an alternative set aside, no one's noun)
             if ("NOUN" in lemmas(lower[h]) or not english(lower[h]) or _adjective_as_noun(lower, n, h)) and (
                 lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
             ):
