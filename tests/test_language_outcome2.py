@@ -38,11 +38,12 @@ def test_a_stop_in_a_queue_keeps_its_reading(text: str, intent: str) -> None:
     assert _intent(text) == intent
 
 
-# "a good" before a measure says the margin was ample; a car's length left by a stop is close;
+# "a good" before a measure makes it a lower bound; a car's length left by a stop is close;
 # "well before" after a stop is a wide margin
 MARGINS = {
     "The bus overtook me on the hill with a good two metres, nice and steady.": "safe",
-    "A cyclist wobbled past my car with a good metre to spare.": "safe",
+    # ("a good metre" is at least a metre, under a pass's 1.5 m: review G2)
+    "A cyclist wobbled past my car with a good metre to spare.": "near_miss",
     "The van pulled out of the side road and we stopped maybe a car's length from it.": "near_miss",
     "A child chased a ball into the road and I stopped well before her.": "safe",
     "A man reversed off his drive into my path and stopped about a foot away from me.": "near_miss",

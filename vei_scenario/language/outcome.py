@@ -35,6 +35,7 @@ from vei_scenario.language.clauses import split
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
+from vei_scenario.language.settings import FOOT_CROSSINGS
 from vei_scenario.language.who import TOWED
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
@@ -135,8 +136,8 @@ _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "ve
 _EVADE = frozenset(
     ("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "wrench", "jam", "anchor")
 )
-_HARD = frozenset(("hard", "dead", "sharply", "sharp", "heavily", "suddenly", "firmly", "harshly", "violently",
-                   "emergency", "full", "strongly", "abruptly"))  # fmt: skip
+_HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
+                   "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
 #: What one brakes "like" when one brakes as hard as one can ("like mad", "like hell").
 _FURY = frozenset(("mad", "hell", "crazy", "anything", "fury", "billy-o"))
@@ -1161,12 +1162,14 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
     "0.5 m clearance", "a separation of 0.5 m". Small: a near miss; wide: safe. ``lead``: the words of
     its sentence before its clause ("I stopped, what, two metres to spare": the stop it is said of)."""
     w = words[i]
-    if _ample_measure(words, i):
-        return SAFE  # ("with a good metre to spare", "went round me with a good 2 metres")
+    if _ample_measure(words, i) and not (i + 1 < len(words) and _relative_to_other(words, i + 1)):
+        at_least = _length_said(words[max(0, i - 3) : i + 1]) or 0.0  # ("a good 2 metres": 2 m or more)
+        if at_least > (3.0 if _gap_ahead([*lead, *words[:i]][-12:]) else 1.5 - 1e-9):
+            return SAFE  # ("went round me with a good 2 metres", "stopped a good 10 metres away")
     spare = w == "spare" and i > 0 and (words[i - 1] == "to" or _length_unit(words[i - 1]))  # ("a metre spare")
     if spare:
         said = words[max(0, i - 6) : i - (words[i - 1] == "to")]
-        if set(said) & (_WIDE | {"good"}) or any(_vehicle_width(said, k) for k in range(len(said))):
+        if set(said) & _WIDE or any(_vehicle_width(said, k) for k in range(len(said))):
             return SAFE  # ("plenty to spare", "with a full car width to spare")
         metres = _length_said(said)
         stopped = _gap_ahead([*lead, *words[:i]][-12:])
@@ -1185,7 +1188,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if set(words[max(0, i - 4) : i]) & {"without", "not", "no", "never"}:
             return None  # ("without sufficient clearance": how close is not said)
         return SAFE  # ("plenty of room", "an ample margin", "enough distance", "adequate clearance")
-    if w == "clear" and i > 0 and words[i - 1] in ("well", "safely", "comfortably"):
+    if w == "clear" and i > 0 and words[i - 1] in _WELL:
         return SAFE
     small = _small_length_said(words, i, lead)
     if small is not None:
@@ -1248,9 +1251,8 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
                 )
                 if metres <= 3.0:
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
-    if w in ("before", "back") and i > 0 and words[i - 1] in _WELL:
-        if any(_lemmas(x) & {"stop", "pull", "halt"} for x in words[max(0, i - 5) : i]):
-            return SAFE  # ("stopped well before him", "pulled up well back": a wide margin)
+    if w in ("before", "back") and i > 0 and words[i - 1] in _WELL and _stop_before_someone(words, i):
+        return SAFE  # ("stopped well before her", "pulled up well back from him": a wide margin)
     if w == "short" and i > 0:
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
             # (by a wide margin: "well short", "comfortably short", "a long way short")
@@ -1272,11 +1274,25 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
 _WELL = frozenset(("well", "comfortably", "safely"))
 
 
+def _stop_before_someone(words: list[str], i: int) -> bool:
+    """Whether "before" or "back" at ``i`` tells where a stop ("stopped", "halted", "pulled up/in")
+    left the stopper from a road user ("stopped well before her", "pulled up well back from the
+    cyclist"): not a pull-out ("pulled out well before the junction"), nor a place or a clause after
+    it ("well before I got there")."""
+    stop = any(
+        _lemmas(x) & {"stop", "halt"} or (_lemmas(x) & {"pull"} and words[k + 1 : k + 2] in (["up"], ["in"]))
+        for k, x in enumerate(words[max(0, i - 5) : i], start=max(0, i - 5))
+    )
+    k = i + 1 + (words[i] == "back" and words[i + 1 : i + 2] == ["from"])
+    obj = words[k : k + 3]
+    return stop and bool(obj) and (obj[0] in _PERSON_OBJECTS or names_road_user(obj))
+
+
 def _ample_measure(words: list[str], i: int) -> bool:
     """Whether the unit of length at ``i`` is said with "a good" right before its number or itself ("a
     good 2 metres", "a good metre to spare", "still a good 10 metres away"): "good" before a measure
-    says it was ample, more than needed, however many metres it names. Not "a good few" (several),
-    nor a length from the kerb or a line (where someone is, not a margin)."""
+    says the length was at least that, so the margin's thresholds apply to it as a lower bound. Not "a
+    good few" (several), nor a length from the kerb or a line (where someone is, not a margin)."""
     if words[i] not in _UNIT_METRES or set(words[i + 1 : i + 5]) & _EDGES_AND_LINES:
         return False
     k = next((k for k in range(max(0, i - 2), i) if words[k - 1 : k + 1] == ["a", "good"]), None)
@@ -1389,12 +1405,19 @@ _KEPT_FROM = frozenset(("from", "back", "short", "behind", "away", "off"))
 def _one_length_after_a_stop(words: list[str], i: int) -> bool:
     """Whether ``words[i]`` is "length" of one vehicle ("a car's length", "a car length", "one bus
     length") that a stop left from someone ("we stopped maybe a car's length from him", "stopped a car
-    length back"): a vehicle's length is the least gap a stop is told in, so a near miss."""
+    length back"): a vehicle's length is the least gap a stop is told in, so a near miss. Not in a queue
+    ("a car's length behind the bus at the lights", "behind the van in front"): a stop in one's turn."""
     k = i - 2 if words[i - 1 : i] == ["'s"] else i - 1
     if words[i] != "length" or k < 1 or words[k].removesuffix("'s") not in _wide_heads():
         return False
     if words[k - 1] not in ("a", "one") or words[i + 1 : i + 2] == [] or words[i + 1] not in _KEPT_FROM:
         return False
+    if (
+        set(words[i + 1 : i + 8]) & _QUEUE
+        or words[i + 1] == "behind"
+        and set(words[i + 2 : i + 7]) & {"front", "ahead"}
+    ):
+        return False  # ("a car's length behind the bus at the lights", "behind the van in front": a queue)
     return any(_lemmas(x) & {"stop", "halt", "pull"} for x in words[max(0, k - 6) : k])
 
 
@@ -1419,6 +1442,8 @@ def _length_said(words: list[str]) -> float | None:
         if unit is None:
             continue
         value = _number(words[k - 1])
+        if value is None and words[k - 2 : k] == ["a", "good"]:
+            value = 1.0  # ("a good metre": at least one)
         if value is None and words[k - 1] in ("a", "an"):
             value = 0.5 if words[k - 2 : k - 1] == ["half"] else 1.0
         if value is not None:
@@ -1624,7 +1649,7 @@ def _ego_acts(words: list[str], i: int) -> str | None:
     if lem & _BRAKE or words[i] == "braking":
         if set(window) & _MILD or "behind" in words[i + 1 : i + 3]:
             return "yield"
-        if set(window) & _HARD:
+        if set(window) & _HARD or _sharp_brake(words, i):
             return "evade"
         return "brake" if lem & {"brake"} else "stop" if lem & {"stop"} else None
     if lem & _YIELD:
@@ -1639,6 +1664,13 @@ def _ego_acts(words: list[str], i: int) -> str | None:
             return None  # ("we waited in the queue", "waiting at the lights": one's turn, not giving way)
         return "yield"
     return None
+
+
+def _sharp_brake(words: list[str], i: int) -> bool:
+    """Whether "sharp" is said of the brake or stop at ``i``: right after its verb ("braked sharp") or
+    right before it as a noun ("a sharp stop"); not "sharp" before another noun ("braked for a sharp
+    bend")."""
+    return words[i + 1 : i + 2] == ["sharp"] or words[i - 1 : i] == ["sharp"]
 
 
 @dataclass(frozen=True)
@@ -1831,6 +1863,21 @@ def _believed(words: list[str], i: int) -> bool:
     return False
 
 
+def _in_question(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` is in a question embedded after "whether", or after "if" that
+    follows a word of knowing or certainty ("not clear if the car touched her", "wasn't sure if the
+    van hit him", "don't know whether it clipped him"): neither asserted nor denied, a hedge."""
+    for k in range(i - 1, -1, -1):
+        if words[k] == "whether":
+            return True
+        if words[k] == "if":
+            return k > 0 and (
+                words[k - 1] in _SURE | {"clear", "unsure", "uncertain"}
+                or bool(_lemmas(words[k - 1]) & {"know", "tell"})
+            )
+    return False
+
+
 #: Verbs (lemmas) of a fright someone was given ("scared the life out of me", "it terrified us").
 _FRIGHTENING = frozenset(("scare", "frighten", "terrify", "petrify", "startle", "spook"))
 
@@ -2014,19 +2061,29 @@ def _compelled(words: list[str], i: int) -> bool:
     return not _scoped(words, k, _UNREAL, 4)
 
 
-def _forced_stop(words: list[str], i: int) -> bool:
+def _forced_stop(words: list[str], i: int, rest: list[str], sentence: list[str]) -> bool:
     """Whether the compelled verb at ``i`` is a plain brake or stop not made in a queue ("had to stop
     halfway", "the driver had to brake"; not "had to stop at the lights"): a stop the situation forced,
-    which is no giving way, however softly it was made."""
-    return _ego_acts(words, i) in ("brake", "stop") and not set(words[i + 1 : i + 5]) & _QUEUE
+    which is no giving way, however softly it was made. Not a stop made to give way either: to let
+    someone go ("had to stop to let her cross", "and let it go"), for a road user ("had to stop for
+    the pedestrians"), or at a place of giving way ("at the give way line", "at the junction", a foot
+    crossing in its sentence): a wait. ``rest``: its sentence after it; ``sentence``: all of it."""
+    if _ego_acts(words, i) not in ("brake", "stop") or set(words[i + 1 : i + 5]) & _QUEUE:
+        return False
+    if any(_lemmas(x) & {"let"} for x in rest[:3]) or _lets_another_go(words, i, rest):
+        return False  # ("had to stop to let a pedestrian cross", "had to stop for a cyclist")
+    crossing = set(sentence) & (FOOT_CROSSINGS - {"pedestrian"})  # ("stepped onto the zebra so I had to stop")
+    at = rest[:1] == ["at"] and set(rest[1:4]) & {"give", "junction", "crossing", "crossroads"}
+    return not (crossing or at)
 
 
 def _hortative(words: list[str], i: int) -> bool:
     """Whether "let" at ``i`` opens its clause with the narrator as its object ("Let us all take care",
     "let's be careful out there", read as "let the ego ..."), the clause opening its sentence (see the
     caller): an imperative of the first person plural, a wish said to the reader, not a road user let
-    through ("he stopped and let us go" has its subject)."""
-    return i == 0 and words[0] == "let" and words[1:3] in (["the", "ego"], ["us"])
+    through ("he stopped and let us go" has its subject), nor a call to be let go ("Let us through!")."""
+    us = 2 if words[1:3] == ["the", "ego"] else 1 if words[1:2] == ["us"] else 0
+    return i == 0 and words[0] == "let" and us > 0 and not set(words[us + 1 : us + 2]) & _LET_GO
 
 
 def _only_just(words: list[str], i: int) -> bool:
@@ -2055,7 +2112,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
     hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
     hedged = hedged or _only_just(words, i) or _near_enough(words, i)
-    hedged = hedged or _believed(words, i)
+    hedged = hedged or _believed(words, i) or _in_question(words, i)
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
     )
@@ -2452,7 +2509,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 pass  # ("I should have waited": what was not done)
             elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
                 add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
-            elif _is_verb(w) and _compelled(words, i) and _forced_stop(words, i):
+            elif _is_verb(w) and _compelled(words, i) and _forced_stop(words, i, whole[at + i + 1 :], whole):
                 add("brake")  # ("had to stop halfway", "the driver had to brake": forced on its doer, no giving way)
             elif clause.first_of_sentence and _hortative(words, i):
                 pass  # ("Let us all take care": a wish said to the reader, no one let through)
