@@ -1135,8 +1135,9 @@ def _named_again_as_ego(tokens: list[str], start: int, names: tuple[str, set[str
     and the words of its noun, "a blue Passat ... the Passat", "a red Polo car ... the car") said "the
     ego", until a vehicle of that kind is brought in ("a Golf", "another van"): a definite noun
     names again the one vehicle of its kind the text has introduced, and here that one is the ego.
-    One placed by someone ("the car ahead"), modifying a noun ("the car park") or owned ("the car's")
-    is not it."""
+    One placed by someone or in a lane ("the car ahead", "the Tesla from the next lane"), said to be
+    another ("the other van", "the second Polo"), modifying a noun ("the car park") or owned ("the
+    car's") is not it, nor one after several of the kind come in ("two vans wait ahead")."""
     kind, words = names
     out = list(tokens)
     for p in reversed(
@@ -1146,9 +1147,12 @@ def _named_again_as_ego(tokens: list[str], start: int, names: tuple[str, set[str
         if p.start < start or p.kind != kind or p.det != "the" or not set(said) <= words:
             continue
         after = out[p.end : p.end + 1]
-        placed = set(after + out[p.start : p.head]) & (PLACED - {"in"}) or out[p.end : p.end + 2] == ["in", "front"]
-        if placed or after in (["'s"], ["of"]):
-            continue  # (someone else, or something of it: "the car ahead", "the oncoming car", "the car's")
+        other = PLACED - {"in"} | OTHER | {"from"}  # ("the car ahead", "the other van", "the Tesla from ...")
+        placed = set(after + out[p.start : p.head]) & other or out[p.end : p.end + 2] == ["in", "front"]
+        lane = out[p.end : p.end + 4]  # ("the van in the left lane", "the Tesla from the next lane")
+        in_a_lane = "lane" in lane and bool(set(lane) & _PLACEMENT_WORDS) and after != ["lane"]
+        if placed or in_a_lane or after in (["'s"], ["of"]):
+            continue  # (someone else, or something of it: "the car ahead", "the other van", "the car's")
         if after and after[0].isalpha() and set(lemmas(after[0])) == {"NOUN"}:
             continue  # (a modifier: "the car park")
         dropped.extend(said)
@@ -1157,9 +1161,15 @@ def _named_again_as_ego(tokens: list[str], start: int, names: tuple[str, set[str
 
 
 def _until_one_is_new(tokens: list[str], kind: str, kind_at: KindAt, known: Known) -> list[str]:
-    """``tokens`` up to the first vehicle of ``kind`` brought in as new ("a Golf", "another van")."""
+    """``tokens`` up to the first vehicle of ``kind`` brought in as new ("a Golf", "another van"), or
+    several ("two vans", "vans are parked along the kerb", "the vans")."""
     new = next(
-        (p.start for p in road_user_phrases(tokens, kind_at, known) if p.kind == kind and p.det in INDEFINITE), None
+        (
+            p.start
+            for p in road_user_phrases(tokens, kind_at, known)
+            if p.kind == kind and (p.det in INDEFINITE or _plural_noun(tokens[p.end - 1]))
+        ),
+        None,
     )
     return tokens if new is None else tokens[:new]
 

@@ -26,7 +26,7 @@ from collections.abc import Callable
 from functools import lru_cache
 
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.vocabulary import IN_LINE
+from vei_scenario.language.vocabulary import GENDERED, IN_LINE
 from vei_scenario.language.vocabulary import PARTY as FAMILY
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
@@ -472,11 +472,6 @@ def _owner_by_pronouns(tokens: list[str]) -> str | None:
 #: The pronouns ("she", "her") that a possessive ("driving her car") gives its owner: subject,
 #: object. Only the gendered ones: "they" may be any group of road users.
 PRONOUNS_OF = {"her": ("she", "her"), "his": ("he", "him")}
-#: Person nouns of each gender, a small closed class: one named besides the driver may be "she"/"he".
-GENDERED = {
-    "her": frozenset("woman women girl girls lady mother mum gran grandmother schoolgirl daughter".split()),
-    "his": frozenset("man men boy boys lad lads gentleman father dad grandad schoolboy son bloke".split()),
-}
 
 
 def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Known) -> list[str]:

@@ -31,6 +31,7 @@ from functools import lru_cache
 from lemminflect import getInflection
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.vocabulary import GENDERED
 from vei_scenario.language.vocabulary import STREET_WORDS as _STREET_WORDS
 
 #: Side words that name a side outright.
@@ -961,7 +962,9 @@ def told_of_the_ego(tokens: list[str], j: int) -> bool:
     "riding towards you") or whose half of the road it is on ("on her side of the road"). "You" is the
     reader, the one driving in a text that tells them their own drive. A third-person pronoun is the
     ego only in a text with no narrator of its own ("I", "we": then "her" is someone else), and not
-    when its clause's subject is that same person ("she kept to her side of the road": her own)."""
+    when its clause's subject is that same person ("she kept to her side of the road": her own), nor
+    where a person it fits is named since the ego was ("A woman is walking along the kerb. A cyclist in
+    front of her": the woman)."""
     person = _EGO_PERSONS.get(tokens[j], "")
     if person is None:
         return True
@@ -972,7 +975,12 @@ def told_of_the_ego(tokens: list[str], j: int) -> bool:
         if tokens[k] == person:
             return False  # (its clause's own subject: "he stayed on his side")
         k -= 1
-    return True
+    since = next((e for e in range(j - 1, -1, -1) if tokens[e] == "ego"), -1)
+    return not GENDERED.get(_POSSESSIVE_OF.get(person, ""), frozenset()) & set(tokens[since + 1 : j])
+
+
+#: The possessive of a subject pronoun, as :data:`vocabulary.GENDERED` keys its person nouns.
+_POSSESSIVE_OF = {"she": "her", "he": "his"}
 
 
 #: The object form of a possessive pronoun ("her" side: "towards her").

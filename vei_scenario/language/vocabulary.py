@@ -9,6 +9,12 @@ from __future__ import annotations
 
 #: Words that name a vehicle by its place in a line of them, right before its noun ("following truck").
 IN_LINE = frozenset({"following", "lead", "leading", "trailing", "rear", "front"})
+#: Person nouns of each gender, by their possessive, a small closed class: one named besides the driver
+#: may be "she"/"he" ("a girl ran out ... she stopped"; "a woman walking ... in front of her").
+GENDERED = {
+    "her": frozenset("woman women girl girls lady mother mum gran grandmother schoolgirl daughter".split()),
+    "his": frozenset("man men boy boys lad lads gentleman father dad grandad schoolboy son bloke".split()),
+}
 
 ACTORS = {
     "ego": ("ego", None),
