@@ -7,7 +7,9 @@ Read as where the road user starts, it puts the two bodies on top of each other 
 begins (a car's front half and a cyclist's rear half take more than 1.5 m), and the road user is then
 never seen going along ahead: the run starts with a collision. So a distance too short to hold the two
 bodies with room between them is kept as the road user's closest approach, and it starts where a road
-user going along with nothing said of its start does.
+user going along with nothing said of its start does. Only for one in the ego's lane, ahead of or behind
+it: a rider said beside the ego ("on my left") or in a lane of its own ("in the cycle lane") passes
+clear of it, and a short distance is where it starts (a left hook).
 """
 
 from __future__ import annotations

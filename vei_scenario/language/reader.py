@@ -1916,9 +1916,13 @@ def _read(text: str) -> Reading:
     named: list[tuple[_Actor | str, str]] = []
     main_subject: _Actor | str | None = None  # the subject said before a "while" clause inside its sentence
     for link, mentions in clauses:
-        if main_subject is not None and while_clause.goes_on_from_the_main_clause(mentions, named):
+        if main_subject is not None and while_clause.goes_on_from_the_main_clause(
+            mentions, named, main_subject, scanned
+        ):
             subject = main_subject  # ("a van pulled out while I was doing 40, then crawled along": the van)
-        main_subject = subject if while_clause.inside_its_sentence(link, mentions) else None
+        main_subject = None
+        if while_clause.inside_its_sentence(link, mentions):  # ("I was doing 30 while ...": none goes on)
+            main_subject = while_clause.main_subject(subject, scanned, mentions[0].start)
         named = []  # (actor, role) in order: subject, prep, verb, participle
         clause_subject: _Actor | str | None = None
         added: list[tuple[_Actor, int]] = []  # behaviours added in this clause
@@ -3487,6 +3491,7 @@ def _specialise(
             # lane beside it; relation and start stay the writer's near kerb's)
             left = side == "left" or (side is None and spec.relation == "roadside_left" and not a.kerb)
             spec.lateral_m = 1.2 if left else -1.2
+            spec.beside = a.beside or a.own_lane  # ("on my left", "in the cycle lane": not in the ego's lane)
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
 

@@ -38,6 +38,9 @@ class ActorSpec:
     #: Sideways in its lane (left positive, m) and which way it faces (``with``/``against`` the lane).
     lateral_m: float | None = None
     facing: str | None = None
+    #: Said beside the ego ("2 m behind me on my left") or in a lane of its own ("in the cycle lane"), not
+    #: in the ego's lane: a short distance said of it is where it starts (:mod:`closest_approach`).
+    beside: bool = False
     #: For a vehicle that swerves round something standing: the index of that actor in the reading.
     obstacle: int | None = None
 

@@ -21,7 +21,7 @@ from vei_scenario.language.maps import ARM_LENGTH_M, LANE_WIDTH_M, ROUNDABOUT_RA
 from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
-from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, SWERVES_FROM_KERB, TYPES, vulnerable
+from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, EGO_KIND, SWERVES_FROM_KERB, TYPES, vulnerable
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
@@ -183,26 +183,23 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         if (
             first.NAME == "along_road"
             and starts_at_m is not None
-            and closest_approach.is_closest_approach(starts_at_m, TYPES["car"][0][0], TYPES[spec.kind][0][0])
+            and not spec.beside  # (one beside the ego, "on my left", "in the cycle lane", starts where said)
+            and closest_approach.is_closest_approach(starts_at_m, TYPES[EGO_KIND][0][0], TYPES[spec.kind][0][0])
         ):  # ("went round him giving 2 m"): how near the ego came, kept as such; it starts where it would
             first_cfg["gap_m"] = round(abs(starts_at_m), 3)
             starts_at_m = None
         crossing = relation.startswith("roadside") and first.NAME == "cross_in_front"
         why = None
-        if crossing and spec.distance_m is not None:
-            why = _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
-        if (
-            first.NAME == "turn_into"
-            and relation in ("junction_left", "junction_right")
-            and spec.distance_m is not None
-        ):
-            why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, spec.distance_m)
+        if crossing and starts_at_m is not None:
+            why = _cross_at_distance(spec.kind, relation, first_cfg, ego, lanes, starts_at_m)
+        if first.NAME == "turn_into" and relation in ("junction_left", "junction_right") and starts_at_m is not None:
+            why = _turn_in_at_distance(spec.kind, relation, first_cfg, ego, lanes, starts_at_m)
         if (
             first.NAME == "run_red_light"
             and relation in ("junction_left", "junction_right")
-            and spec.distance_m is not None
+            and starts_at_m is not None
         ):
-            why = _run_at_distance(spec.kind, first_cfg, ego_speed, spec.distance_m)
+            why = _run_at_distance(spec.kind, first_cfg, ego_speed, starts_at_m)
         if why and notes is not None:
             notes.append(f"{name}: {why}")
         if "distance_m" in ego and not adversaries and crossing:
@@ -213,13 +210,13 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
                 before = layout({"kind": kind, "lanes_per_direction": lanes}).feature_s_m or ARM_LENGTH_M
                 ego["distance_m"] = round(min(room, ARM_LENGTH_M - 20.0, before - 10.0), 3)
         spawn, speed = place_adversary(spec.kind, relation, first.NAME, first_cfg, ego, lanes, given_speed, starts_at_m)
-        if first.NAME == "run_red_light" and relation.startswith("junction") and spec.distance_m is None:
+        if first.NAME == "run_red_light" and relation.startswith("junction") and starts_at_m is None:
             timed.add(name)
         if spec_lateral:
             spawn["lateral_m"] = round(spec_lateral, 3)
         facing = spec.facing or getattr(first, "DEFAULT_SPAWN", {}).get("facing")
         if first.NAME == "wrong_way" and relation == "oncoming":
-            if _in_lane_at_gap(spec.distance_m, ego_speed, speed, first_cfg):
+            if _in_lane_at_gap(starts_at_m, ego_speed, speed, first_cfg):
                 spawn["relation"] = "ahead"  # (at a gap too short to drift over in: already in the ego's lane)
             else:
                 facing = None  # it starts in its own lane and drifts over
@@ -905,7 +902,8 @@ def _kerb_rider(
     if distance_m is not None:
         spawn["longitudinal_m"] = distance_m
     else:
-        gap = value(cfg, params, "gap_m") if "gap_m" in params else 10.0
+        # (along_road's gap_m is how near the ego comes, not a start's gap: see closest_approach)
+        gap = value(cfg, params, "gap_m") if "gap_m" in params and behaviour_name != "along_road" else 10.0
         closing = max(ego_speed - pace, 1.0)
         spawn["longitudinal_m"] = round(lengths / 2 + gap + closing * float(cfg.get("lead_s", 2.5)), 3)
     return spawn, round(pace, 3)

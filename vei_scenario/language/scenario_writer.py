@@ -48,6 +48,8 @@ EGO_TIME_GAP_S = 1.5
 CROSSING_BEYOND_M = 30.0
 #: The step scenarios are run and scored at (Hz): vei run's own, so vei run replays a batch's run.
 DEFAULT_RATE_HZ = 100.0
+#: What the ego drives: the layers' ego is always this type (its length is what a start must clear).
+EGO_KIND = "car"
 #: Box (length, width, height m), category, mass (kg), max speed, acceleration, deceleration.
 TYPES = {
     "car": ((4.6, 1.85, 1.5), "car", 1500.0, 50.0, 4.0, 9.0),
@@ -311,10 +313,10 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         props["watchEntities"] = " ".join(others)
         props.update(cap.properties())
         controller = xosc.Controller("CollisionAvoidancePlanner", _properties(props))
-        entities.add_scenario_object(EGO, _vehicle(EGO, "car", mu), controller)
+        entities.add_scenario_object(EGO, _vehicle(EGO, EGO_KIND, mu), controller)
         init.add_init_action(EGO, xosc.ActivateControllerAction(lateral=False, longitudinal=True))
     else:
-        entities.add_scenario_object(EGO, _vehicle(EGO, "car", mu))
+        entities.add_scenario_object(EGO, _vehicle(EGO, EGO_KIND, mu))
     init.add_init_action(EGO, xosc.TeleportAction(_lane_position(ego_pose)))
     init.add_init_action(EGO, xosc.AbsoluteSpeedAction(ego_speed, _step()))
     if info.exits:
