@@ -79,6 +79,8 @@ FIRST = {
     "language_independent_z26.json": ((50, 50, 15, 48), "sealed for a round of reader work"),
     "language_independent_z27.json": ((50, 50, 9, 47), "sealed for a round of reader work"),
     "language_independent_z28.json": ((50, 50, 11, 40), "sealed for a round of reader work"),
+    "language_independent_z29.json": ((50, 50, 5, 41), "sealed for a round of reader work"),
+    "language_independent_z30.json": ((50, 49, 3, 46), "sealed for a round of reader work"),
 }
 
 

@@ -4,6 +4,7 @@ of the road users it names and the ego's speed, for the tests of who is who and 
 from __future__ import annotations
 
 from vei_scenario.language.reader import read
+from vei_scenario.language.rules_backend import layers_from_text
 
 
 def kinds(text: str) -> list[str]:
@@ -27,3 +28,16 @@ def first_moves_not_on_foot(text: str) -> list[str]:
     actors = read(text).actors
     actor = next((a for a in actors if a.kind != "pedestrian"), actors[0])
     return [b[0] for b in actor.behaviours]
+
+
+def _behaviour_names(behaviour: dict) -> list[str]:
+    """The names in a layers' behaviour tree (one behaviour, or a sequence or parallel of them), in order."""
+    if "behaviour" in behaviour:
+        return [behaviour["behaviour"]]
+    parts = behaviour.get("sequence", behaviour.get("parallel", []))
+    return [name for part in parts for name in _behaviour_names(part)]
+
+
+def acts(text: str) -> list[tuple[str, list[str]]]:
+    """(type, behaviour names) of each adversary in ``text``'s layers (seed 0): what the scenario plays."""
+    return [(a["type"], _behaviour_names(a["behaviour"])) for a in layers_from_text(text, 0)["adversaries"]]

@@ -8,18 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from vei_scenario.language.rules_backend import layers_from_text
-
-
-def _names(behaviour: dict) -> list[str]:
-    if "behaviour" in behaviour:
-        return [behaviour["behaviour"]]
-    return [n for part in behaviour.get("sequence", behaviour.get("parallel", [])) for n in _names(part)]
-
-
-def _acts(text: str) -> list[tuple[str, list[str]]]:
-    """(type, behaviour names) of each adversary of ``text``'s layers (seed 0)."""
-    return [(a["type"], _names(a["behaviour"])) for a in layers_from_text(text, 0)["adversaries"]]
+from tests.reading_of import acts as _acts
 
 
 @pytest.mark.parametrize(
