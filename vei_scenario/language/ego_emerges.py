@@ -21,7 +21,7 @@ from dataclasses import replace
 
 from vei_scenario.language.access_pull_out import ACCESS_HEADS
 from vei_scenario.language.clauses import SENTENCE_END, sentence_start, sentence_stop
-from vei_scenario.language.junctions import _SIGNAL
+from vei_scenario.language.junctions import SIGNAL_WORDS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.sides import OFF_ROAD_PLACES
 
@@ -93,7 +93,7 @@ def _on_its_own_light(tokens: list[str], i: int) -> bool:
     start, stop = sentence_start(tokens, i), sentence_stop(tokens, i)
     for k in range(start, stop):
         nxt = tokens[k + 1] if k + 1 < len(tokens) else ""
-        if tokens[k] == "arrow" or (tokens[k] == "green" and (nxt in _SIGNAL or set(lemmas(nxt)) != {"NOUN"})):
+        if tokens[k] == "arrow" or (tokens[k] == "green" and (nxt in SIGNAL_WORDS or set(lemmas(nxt)) != {"NOUN"})):
             return True
     return False
 

@@ -149,7 +149,7 @@ def priority(clauses: list, tokens: list[str]) -> list:
 
 
 #: Words of a traffic signal that may follow "the red" ("ran the red light").
-_SIGNAL = frozenset(("light", "lights", "signal", "signals", "man", "arrow"))
+SIGNAL_WORDS = frozenset(("light", "lights", "signal", "signals", "man", "arrow"))
 #: Verbs (lemmas) that take the red as their object without going through it ("saw the red", "waited
 #: for ... the red", "approached the red"): perceiving it, coming up to it, keeping to it.
 _NOT_THROUGH = frozenset(
@@ -167,7 +167,7 @@ def _runs_the_red_at(tokens: list[str], i: int) -> bool:
     if not said or any(v in _NOT_THROUGH for v in said) or tokens[i + 1 : i + 3] not in (["the", "red"], ["a", "red"]):
         return False
     after = tokens[i + 3] if i + 3 < len(tokens) else ""
-    if after in _SIGNAL:
+    if after in SIGNAL_WORDS:
         return True
     forms = lemmas(after)
     return not (forms.get("NOUN") and not forms.get("VERB") and not forms.get("ADP"))
@@ -292,7 +292,7 @@ def signal_said(said: str) -> bool:
         after = said[m.end() :].split()[:1]
         nxt = after[0] if after else ""
         forms = lemmas(nxt)
-        if nxt in _SIGNAL or not (forms.get("NOUN") and not forms.get("VERB") and not forms.get("ADP")):
+        if nxt in SIGNAL_WORDS or not (forms.get("NOUN") and not forms.get("VERB") and not forms.get("ADP")):
             return True
     return False
 
