@@ -31,11 +31,14 @@ from functools import lru_cache
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
+from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
+from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
 from vei_scenario.language.settings import FOOT_CROSSINGS
+from vei_scenario.language.thought_of import only_thought_of
 from vei_scenario.language.who import TOWED
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
@@ -278,7 +281,11 @@ def _denied_before(words: list[str], i: int) -> bool:
     set aside counts as denied ("instead of hitting him")."""
     start = max((k + 1 for k in range(i) if words[k] in _WH_COMPLEMENT | {"if"}), default=0)
     count = sum(
-        1 for k in range(start, i) if (words[k] in _NEGATORS or words[k] in _FAILING) and not _of_a_noun(words, k, i)
+        1
+        for k in range(start, i)
+        if (words[k] in _NEGATORS or words[k] in _FAILING)
+        and not _of_a_noun(words, k, i)
+        and not elliptical_negation(words, k)  # ("the truck does not → we get rear-ended")
     )
     count += sum(1 for w in words[max(start, i - 4) : i] if _lemmas(w) & _DENYING_VERBS)  # ("avoid a crash")
     count += forgone(words, i)
@@ -464,7 +471,7 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
     w = words[i]
     nxt = words[i + 1] if i + 1 < len(words) else ""
     prev = words[i - 1] if i > 0 else ""
-    if w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS) or _plural_of_contact(words, i):
+    if _contact_noun(w) or _plural_of_contact(words, i):
         if w not in _CONTACT_NOUNS and _counted(words, i):
             return False  # ("47 reported collisions involving e-scooters last year": a statistic)
         if nxt in _COMPOUND_HEADS or prev in ("time-to", "eye") or w.startswith("time-to"):
@@ -1230,6 +1237,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
             front
             or (
                 words[k] in ("from", "off", "short", "before")
+                and not _short_of_a_place(words, k)
                 and k + 1 < len(words)
                 and (
                     words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"}
@@ -1253,7 +1261,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w in ("before", "back") and i > 0 and words[i - 1] in _WELL and _stop_before_someone(words, i):
         return SAFE  # ("stopped well before her", "pulled up well back from him": a wide margin)
-    if w == "short" and i > 0:
+    if w == "short" and i > 0 and not _short_of_a_place(words, i):
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
             # (by a wide margin: "well short", "comfortably short", "a long way short")
             wide = words[i - 1] in _WELL or words[i - 2 : i] in (
@@ -1268,6 +1276,23 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: The places a road user stops short of: its road's places and the yellow box of a junction.
+_STOPPING_PLACES = _PLACES | frozenset(("box",))
+
+
+def _short_of_a_place(words: list[str], i: int) -> bool:
+    """Whether "short of" at ``i`` has a place for its object ("stopped short of the stop line",
+    "pulled up short of the box"): where the stop was made, not a margin left to anyone."""
+    if words[i] != "short" or words[i + 1 : i + 2] != ["of"]:
+        return False
+    phrase = []
+    for w in words[i + 2 :]:
+        if w in _PHRASE_ENDS:
+            break
+        phrase.append(w)
+    return bool(phrase) and phrase[-1] in _STOPPING_PLACES
 
 
 #: Adverbs that say a margin was wide ("well short", "comfortably back").
@@ -1742,14 +1767,18 @@ def _damage_to_a_vehicle(words: list[str], i: int) -> bool:
     return _vehicle_part(obj) or names_road_user(obj[:4]) or bool(obj[:1] and obj[0] in _EGO_HEADS)
 
 
-def _person_subject(words: list[str], i: int) -> bool:
+def _person_subject(words: list[str], i: int, inherited: str | None = None) -> bool:
     """Whether the predicate at ``i`` (after a copula or passive auxiliary and adverbs) is said of a
-    person or road user: "a pedestrian was killed", "the boy was fine", "she was okay"."""
+    person or road user: "a pedestrian was killed", "the boy was fine", "she was okay". ``inherited``:
+    the subject the clause carries from the clause before it; a clause that opens on its auxiliary
+    says its predicate of that one ("the boy stepped back and was not hurt"), if it is not the ego."""
     k = i - 1
     while k >= 0 and (words[k].endswith("ly") or words[k] in _DEGREE | {"not", "all"}):
         k -= 1
     if k < 0 or words[k] not in _PASSIVE_AUX:
         return False
+    if k == 0 and inherited == "other":
+        return True  # ("... and was unhurt": said of the road user of the clause before)
     subject = words[max(0, k - 4) : k]
     return bool(subject) and any(
         x
@@ -2113,6 +2142,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
     hedged = hedged or _only_just(words, i) or _near_enough(words, i)
     hedged = hedged or _believed(words, i) or _in_question(words, i)
+    hedged = hedged or (_contact_noun(words[i]) and only_thought_of(words, i))  # ("a crash is unthinkable")
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
     )
@@ -2124,14 +2154,18 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     return "contact"
 
 
+def _contact_noun(w: str) -> bool:
+    """Whether ``w`` is a noun of contact or its plural ("a collision", "crashes")."""
+    return w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS)
+
+
 def _supposed_event(words: list[str], i: int) -> bool:
     """Whether the noun of contact at ``i`` is the subject of a modal of supposition ("the impact
     would occur", "a collision could happen", "a crash might follow"): the event is supposed, not
     told. Not "should" or "will": a test's "collision should happen" is the outcome it requires; nor
     a modal perfect ("the crash could have killed my son", "the impact would have been worse"), which
     supposes what the contact that happened did or might have been."""
-    w = words[i]
-    noun = w in _CONTACT_NOUNS or (w.endswith("s") and w[:-1] in _CONTACT_NOUNS)
+    noun = _contact_noun(words[i])
     perfect = words[i + 2 : i + 3] in (["have"], ["'ve"])
     return noun and words[i + 1 : i + 2] != [] and words[i + 1] in _MODALS - {"should"} and not perfect
 
@@ -2354,6 +2388,9 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             if _close_idiom(words, i, whole, at) or _fright(words, i):
                 add("close")  # ("too close for comfort", "touch and go")
                 continue
+            if braking_sound(words, i) and not _denied_before(words, i):
+                add("evade")  # ("tyres screeched", "stopped with a screech": someone's emergency stop)
+                continue
             if (
                 w.endswith("ing")
                 and words[i + 1 : i + 2] == ["into"]
@@ -2399,7 +2436,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             if (
                 _lemmas(w) & _HARMED
                 and not w.endswith("ing")
-                and _person_subject(words, i)
+                and _person_subject(words, i, clause.inherited)
                 and not (_scoped(words, i, _HYPOTHETICAL, 4) or clause.after_if)  # ("before someone gets killed")
                 and not _predicted(words, i)  # ("somebody is going to be killed there")
             ):
@@ -2412,7 +2449,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 hypothetical = _modal_perfect(words, i) or _scoped(words, i, _HYPOTHETICAL, 4)
                 add("hedged" if hypothetical else "contact")  # ("damage to my wing", "could have dented it")
                 continue
-            if w in _UNHURT and _person_subject(words, i):
+            if w in _UNHURT and _person_subject(words, i, clause.inherited):
                 add("denied")  # ("the kid was fine": unhurt, however close it was)
                 continue
             if _averted(words, i, sentence[: len(sentence) - len(words) + i]):
