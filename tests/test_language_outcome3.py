@@ -1,6 +1,6 @@
 """Outcomes told in constructions the outcome reader once misread (:mod:`vei_scenario.language.outcome`):
 the sound of a hard brake, a harm denied of a subject its clause leaves out, a contact only thought
-of, a negation whose verb is left out, and a stop short of a place. Wordings written for these tests,
+of, a negation whose verb is left out, and a stop short of a road marking. Wordings written for these tests,
 none taken from a corpus; the guards keep the old reading of their near neighbours."""
 
 from __future__ import annotations
@@ -97,15 +97,15 @@ def test_a_negated_verb_is_still_denied() -> None:
     assert _intent("Lead car brakes hard. Ego stops in time, the truck behind does not hit the ego.") == "near_miss"
 
 
-# a stop short of a place (a line, a box junction) is where one stopped, not a margin to anyone
-SHORT_OF_A_PLACE = [
+# a stop short of a road marking (a line, a box junction) is where one stopped, not a margin to anyone
+SHORT_OF_A_MARKING = [
     "The lights went amber, so I slowed and stopped short of the stop line. The cyclist beside me went on. No drama.",
     "Taxi from the left saw our blues, stopped short of the box and we went through without incident.",
 ]
 
 
-@pytest.mark.parametrize("text", SHORT_OF_A_PLACE)
-def test_stopped_short_of_a_place_is_no_margin(text: str) -> None:
+@pytest.mark.parametrize("text", SHORT_OF_A_MARKING)
+def test_stopped_short_of_a_marking_is_no_margin(text: str) -> None:
     assert _intent(text) == "safe"
 
 
@@ -127,3 +127,8 @@ def test_the_layers_carry_the_braking_sound() -> None:
 
 def test_an_opinion_after_a_crash_hedges_nothing() -> None:
     assert _intent("The crash happened so fast I did not think about braking.") == "collision"
+
+
+def test_stopped_short_of_a_crossing_as_someone_came_out_stays_close() -> None:
+    text = "A girl on a scooter shot out of the park and I had to stop short of the crossing. All okay."
+    assert _intent(text) == "near_miss"

@@ -1237,7 +1237,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
             front
             or (
                 words[k] in ("from", "off", "short", "before")
-                and not _short_of_a_place(words, k)
+                and not _short_of_a_marking(words, k)
                 and k + 1 < len(words)
                 and (
                     words[k + 1] in _POSSESSIVES | _PERSON_OBJECTS | {"the", "of"}
@@ -1261,7 +1261,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w in ("before", "back") and i > 0 and words[i - 1] in _WELL and _stop_before_someone(words, i):
         return SAFE  # ("stopped well before her", "pulled up well back from him": a wide margin)
-    if w == "short" and i > 0 and not _short_of_a_place(words, i):
+    if w == "short" and i > 0 and not _short_of_a_marking(words, i):
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
             # (by a wide margin: "well short", "comfortably short", "a long way short")
             wide = words[i - 1] in _WELL or words[i - 2 : i] in (
@@ -1278,12 +1278,13 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
     return None
 
 
-#: The places a road user stops short of: its road's places and the yellow box of a junction.
-_STOPPING_PLACES = _PLACES | frozenset(("box",))
+#: The road markings a stop is made at: a stop or give-way line, the yellow box of a junction. (A
+#: crossing or a path is not one: "stopped short of the crossing" as a rider came out is close.)
+_STOPPING_MARKINGS = frozenset(("line", "lines", "box", "markings"))
 
 
-def _short_of_a_place(words: list[str], i: int) -> bool:
-    """Whether "short of" at ``i`` has a place for its object ("stopped short of the stop line",
+def _short_of_a_marking(words: list[str], i: int) -> bool:
+    """Whether "short of" at ``i`` has a road marking for its object ("stopped short of the stop line",
     "pulled up short of the box"): where the stop was made, not a margin left to anyone."""
     if words[i] != "short" or words[i + 1 : i + 2] != ["of"]:
         return False
@@ -1292,7 +1293,7 @@ def _short_of_a_place(words: list[str], i: int) -> bool:
         if w in _PHRASE_ENDS:
             break
         phrase.append(w)
-    return bool(phrase) and phrase[-1] in _STOPPING_PLACES
+    return bool(phrase) and phrase[-1] in _STOPPING_MARKINGS
 
 
 #: Adverbs that say a margin was wide ("well short", "comfortably back").
