@@ -87,3 +87,72 @@ def test_a_participle_said_with_a_comma_may_be_the_road_users_turn() -> None:
 def test_a_clause_after_when_is_no_vehicle_the_narrator_drives() -> None:
     (cyclist,) = read("I was driving when a cyclist overtook me on the inside.").actors
     assert cyclist.kind == "bicycle" and [b[0] for b in cyclist.behaviours] == ["overtake"]
+
+
+# A pull-in in front of the ego told in a sentence of its own after an overtake is a cut-in of its own;
+# told in the overtake's own sentence, or ending nowhere near the ego, it is how the overtake ends.
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A taxi overtook us on the bypass. It then swerved in barely a car length in front of our bonnet.",
+        "Some idiot on a motorbike came past me at the lights. He pulled in right in front of me and I had to brake.",
+        "Test 12: the coach overtakes the ego at 90 km/h. Then the coach cuts in 5 m ahead of the ego.",
+        "mate this van just flew past us on the dual carriageway!! then dived in front of my car with no signal",
+        "A pickup overtook me on the hill. Pickup cut in right on my nose.",
+    ],
+)
+def test_a_pull_in_told_apart_at_the_ego_is_a_cut_in_after_the_overtake(text: str) -> None:
+    assert [m for m in moves(text) if "overtake" in m] == [["overtake", "cut_in"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van overtook me and pulled back in a long way ahead.",
+        "A car overtook me and cut back in right in front of me.",
+        "A car overtakes the ego and cuts in sharply in front of it.",
+        "A taxi overtook us on the bypass. It then cut back in a car length in front of us.",  # (a return: its end)
+    ],
+)
+def test_a_pull_in_in_the_overtakes_sentence_or_of_unclear_doer_stays_its_end(text: str) -> None:
+    assert [m for m in moves(text) if "overtake" in m] == [["overtake"]]
+
+
+def test_an_oncoming_overtakers_return_told_apart_names_no_cut_in() -> None:
+    said = moves("A lorry coming the other way overtook a tractor. The lorry pulled back in.")
+    assert not any("cut_in" in m for m in said)
+
+
+def test_the_cut_in_told_apart_is_in_the_layers() -> None:
+    layers = layers_from_text("A pickup overtook me on the hill. Pickup cut in right on my nose.", 0)
+    (adv,) = layers["adversaries"]
+    assert [part["behaviour"] for part in adv["behaviour"]["sequence"]] == ["overtake", "cut_in"]
+
+
+# Kept behind the ego over a stretch of road is following it; then passing it is an overtake after that.
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A motorcyclist who had been sitting close behind us for some distance overtook on the offside.",
+        "Old Land Rover stayed behind me for about three miles, then went past on the straight.",
+        "Log 4: grey hatchback behind the ego for several minutes, then overtakes it.",
+    ],
+)
+def test_behind_the_ego_for_a_stretch_then_past_is_following_then_overtaking(text: str) -> None:
+    assert moves(text) == [["follow_vehicle", "overtake"]]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("A car came up behind me and overtook.", [["overtake"]]),  # (it only comes up: no stretch kept)
+        ("I drove behind a van for two miles, then it stopped.", [["stop"]]),  # (the ego is the one behind)
+        ("A bus ran into me from behind for no reason at all.", [["keep_going"]]),  # (no ego after "behind")
+    ],
+)
+def test_behind_without_a_stretch_or_of_the_ego_is_no_following(text: str, said: list[list[str]]) -> None:
+    assert moves(text) == said

@@ -2782,11 +2782,34 @@ def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
     return k + 1
 
 
+#: Words that measure a stretch of road or time kept ("for two miles", "for some distance", "for a while").
+_STRETCH = frozenset(("mile", "miles", "km", "kilometre", "kilometres", "kilometer", "kilometers", "minute",
+                      "minutes", "while", "ages", "distance", "way", "stretch"))  # fmt: skip
+#: How many words may stand between "for" and the word of its stretch ("for the best part of two miles").
+_STRETCH_WORDS = 6
+
+
+def _behind_the_ego_for_a_stretch(tokens: list[str], j: int) -> int | None:
+    """Where "behind" + the ego + "for" + a stretch ends when said from ``tokens[j]`` ("behind us for
+    some distance", "behind me for two miles"), or None. Why: a road user kept behind the ego over a
+    stretch of road is one that follows it, as much as one sat on its tail."""
+    if tokens[j] != "behind":
+        return None
+    k = j + 1 + (tokens[j + 1 : j + 2] == ["the"])
+    if tokens[k : k + 1] not in (["me"], ["us"], ["ego"]) or tokens[k + 1 : k + 2] != ["for"]:
+        return None
+    for m in range(k + 2, min(k + 2 + _STRETCH_WORDS, len(tokens))):
+        if tokens[m] in _STRETCH:
+            return m + 1
+    return None
+
+
 def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user said to be at the ego's rear ("sitting 5 metres off my back bumper",
-    "hung on my tail", "right up my backside") read as following the ego from behind: where it keeps
-    itself, close behind the ego, is what following is, whatever verb of staying says it. A verb of
-    contact before it ("hit me on my rear bumper") says where it touched, not where it follows."""
+    "hung on my tail", "right up my backside") or behind it for a stretch ("sitting close behind us for
+    some distance") read as following the ego from behind: where it keeps itself, close behind the
+    ego, is what following is, whatever verb of staying says it. A verb of contact before it ("hit me
+    on my rear bumper") says where it touched, not where it follows."""
     out = []
     for link, mentions in clauses:
         if not mentions:
@@ -2795,7 +2818,7 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
         kept = list(mentions)
         first, last = mentions[0].start, max(x.end for x in mentions)
         for j in range(first, min(last + 6, len(tokens))):
-            end = _the_ego_rear_at(tokens, j)
+            end = _the_ego_rear_at(tokens, j) or _behind_the_ego_for_a_stretch(tokens, j)
             if end is None:
                 continue
             before = [x for x in kept if x.start < j]

@@ -62,6 +62,7 @@ from vei_scenario.language import (
     off_a_place,
     parked_rows,
     protagonist,
+    pull_in_apart,
     report_vehicle,
     run_on,
     said_again,
@@ -2553,6 +2554,8 @@ def _read(text: str) -> Reading:
             a.along = a.along or (name == "keep_going" and kerb_ride.goes_along(words))
             end, start = cfg.pop("_end", len(scanned)), cfg.pop("_start", None)
             a.across = a.across or kerb_ride.said_across(name, words, scanned[end:][:2])
+            if start is not None:
+                pull_in_apart.mark(name, cfg, scanned, start, end)  # (whether a pull-in is told apart)
             if start is not None and crossing_reaction.said_free(
                 name, cfg, scanned, start, end, lambda w, kind=a.kind: _single_kind(w) == kind
             ):
@@ -3673,11 +3676,13 @@ def _tidy(a: _Actor) -> list:
             name = "sudden_stop"  # "decelerates abruptly to a standstill", "stops suddenly": a hard stop
         behaviours.append((name, cfg, crit, lk))
     for b in behaviours:
-        if out and b[0] == "cut_in" and out[-1][0] == "overtake":
+        apart = out and pull_in_apart.told_apart(out[-1][1], b[1])  # (a sentence of its own, at the ego)
+        if out and b[0] == "cut_in" and out[-1][0] == "overtake" and not apart:
             name, cfg, crit, lk = out[-1]  # an overtake ends by cutting back in: "cuts in sharply" is how
             out[-1] = (name, cfg, crit or b[2], lk)
             continue
         out.append(b)
+    out = [(name, pull_in_apart.unmarked(cfg), crit, lk) for name, cfg, crit, lk in out]
     if a.kind != "pedestrian" and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
     if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
