@@ -241,11 +241,16 @@ def test_a_rider_the_wrong_way_at_a_junction_still_comes_head_on(text):
         "A taxi comes up from behind, swings out, overtakes me and cuts back in.",
         "On the dual carriageway a van came up behind us, pulled out, passed us and tucked back in ahead.",
         "Behind me a hatchback swung out, overtook me and dived back in.",
-        "A coach sat behind us for a while, then swung out and overtook us.",
     ],
 )
 def test_pulling_out_just_before_an_overtake_is_how_it_starts(text):
     assert _behaviours(text) == ["overtake"]
+
+
+def test_a_pull_out_after_a_stretch_behind_the_ego_is_no_move_of_its_own():
+    # Sitting behind the ego for a while is following it; the pull-out is how the overtake starts.
+    text = "A coach sat behind us for a while, then swung out and overtook us."
+    assert _behaviours(text) == ["follow_vehicle", "overtake"]
 
 
 @pytest.mark.parametrize(
