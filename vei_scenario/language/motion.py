@@ -2163,7 +2163,7 @@ def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
 
 
 #: Words of the carriageway a road user comes out into ("out into the road").
-_CARRIAGEWAY = frozenset(("road", "street", "carriageway", "roadway", "traffic"))
+CARRIAGEWAY = frozenset(("road", "street", "carriageway", "roadway", "traffic"))
 #: Where a road user comes out from that hides it at the side ("out from between", "out from behind").
 _FROM_HIDING = frozenset(("between", "behind"))
 #: Adverbs that may stand between the verb and "out" ("came straight out", "rode suddenly out").
@@ -2184,7 +2184,7 @@ def _out_into_the_road(tokens: list[str], j: int) -> int | None:
         nxt[:1] in (["into"], ["onto"], ["across"])
         and len(nxt) > 2
         and nxt[1] in _DETERMINERS
-        and nxt[2] in _CARRIAGEWAY
+        and nxt[2] in CARRIAGEWAY
     ):
         return j + 2
     if nxt[:1] == ["from"] and len(nxt) > 1 and nxt[1] in _FROM_HIDING:
@@ -2334,7 +2334,7 @@ def _into_the_road_from(tokens: list[str], j: int) -> int | None:
     """Where "(out) into / onto / across the road" or one of :func:`_out_into_the_road`'s ways out
     said from ``tokens[j]`` ends, or None: after a thing gone after, "out" may be left unsaid."""
     if tokens[j : j + 1] in (["into"], ["onto"], ["across"]) and j + 2 < len(tokens):
-        if tokens[j + 1] in _DETERMINERS and tokens[j + 2] in _CARRIAGEWAY:
+        if tokens[j + 1] in _DETERMINERS and tokens[j + 2] in CARRIAGEWAY:
             return j + 1
     return _out_into_the_road(tokens, j)
 

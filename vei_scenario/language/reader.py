@@ -71,6 +71,7 @@ from vei_scenario.language import (
     sides,
     start_gap,
     stopped_short,
+    way_across,
     while_clause,
     whose_act,
     writer_on_foot,
@@ -1875,6 +1876,7 @@ def _read(text: str) -> Reading:
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = lane_to_front.into_the_lane_in_front(clauses, scanned)  # ("in the left lane came in front of me")
+    clauses = way_across.to_the_other_side(way_across.over_the_road(clauses, scanned), scanned)  # ("over the road")
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.cut_up(clauses, scanned)  # ("cut me up": into the lane in front, not across)
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
