@@ -1002,6 +1002,7 @@ KERB = (
     "pavement",
     "sidewalk",
     "footpath",
+    "footway",
     "roadside",
     "verge",
     "edge of the road",
