@@ -71,7 +71,7 @@ OPINION_VERBS = frozenset(
      "guessed", "figure", "imagine", "bet", "expect", "recall", "remember", "mean", "dunno"}
 )  # fmt: skip
 #: Words between the speaker and the verb of opinion ("I would say", "I do not know", "I 'd guess").
-_OPINION_AUXILIARIES = frozenset({"would", "do", "did", "not", "'d", "should", "must", "'m"})
+OPINION_AUXILIARIES = frozenset({"would", "do", "did", "not", "'d", "should", "must", "'m"})
 _SPEAKERS = frozenset({"i", "you", "we", "ego"})
 
 
@@ -82,7 +82,7 @@ def _guess_before(tokens: list[str], k: int) -> int:
     j = k
     while j > 0:
         w, s = tokens[j], j - 1
-        while w in OPINION_VERBS and s > 0 and tokens[s] in _OPINION_AUXILIARIES:
+        while w in OPINION_VERBS and s > 0 and tokens[s] in OPINION_AUXILIARIES:
             s -= 1
         if w in OPINION_VERBS and tokens[s] in _SPEAKERS:  # ("I think", "I would say", "I do not know")
             j = s - 1
@@ -935,6 +935,8 @@ def owners(
             return (owner,)
         if tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
+        if tokens[j + 1] == "at" and unit and k >= 0 and judged_at(tokens[k]):
+            return (owner,)  # "estimates the scooter at 15 mph", "clocked the van at 50 mph": the object's
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
         return (subject,)  # "with us coming at 80 km/h": the subject of a participle after "with"
@@ -1036,6 +1038,17 @@ def _be_at(tokens: list[str], i: int) -> int | None:
     while k > 0 and tokens[k] in _AUXILIARIES - _BE:
         k -= 1
     return k
+
+
+#: Verbs (lemmas) of judging a quantity that take an object and "at" and the value ("estimates the
+#: scooter at 15 mph", "clocked the van at 50 mph", "I'd put him at 60 mph"): the value is said of the
+#: object, as "the scooter was doing 15 mph" says it; the one who judges (the subject) need not move at all.
+JUDGING_VERBS = frozenset({"estimate", "clock", "judge", "gauge", "put", "reckon", "guess", "place"})
+
+
+def judged_at(word: str) -> bool:
+    """Whether ``word`` is a verb of judging a quantity (:data:`JUDGING_VERBS`) in any of its forms."""
+    return bool(JUDGING_VERBS & set(lemmas(word).get("VERB", ())))
 
 
 def compared(tokens: list[str], k: int) -> bool:
