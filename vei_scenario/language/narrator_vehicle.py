@@ -259,6 +259,13 @@ def _kind_again(tokens: list[str], kind: str, kind_at: KindAt, known: Known, dro
     return tokens
 
 
+def _verb_of_its_own(word: str) -> bool:
+    """Whether ``word`` can only be a verb, or is a form of "be": a phrase that reaches one has a
+    predicate of its own, so it is no heading or role of the narrator's ("Van, no lights, came at me")."""
+    pos = set(lemmas(word))
+    return word.isalpha() and ("VERB" in pos and not pos & {"NOUN", "ADJ"} or word in BE)
+
+
 def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "Coach driver here. Cruising at 60 mph ...", "Courier van, dual carriageway, I'm in the left
     lane ...": a text that opens with a bare vehicle (or its driver) standing alone, as a heading
@@ -282,10 +289,8 @@ def _heading(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str
     if not here:  # (no verb of its own before the narrator speaks: "Van, no lights, came at me")
         _, e = sentence_span(tokens, end)
         stop = next((k for k in range(end, e) if tokens[k] in FIRST_PERSON), e)
-        for k in range(end + 1, stop):
-            pos = set(lemmas(tokens[k]))
-            if tokens[k].isalpha() and ("VERB" in pos and not pos & {"NOUN", "ADJ"} or tokens[k] in BE):
-                return tokens
+        if any(_verb_of_its_own(tokens[k]) for k in range(end + 1, stop)):
+            return tokens
     cut = end + here
     dropped.extend(w for w in tokens[:cut] if w.isalpha())
     out = tokens[cut:]
@@ -462,10 +467,45 @@ def _narrator_aboard(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     return tokens
 
 
+def _narrator_after_role(tokens: list[str], end: int) -> int | None:
+    """Where "I" or "we", the subject of the main clause, follows a role "as a <road user>" ending at
+    ``end``, or None. The role is set off by a comma ("As a driver who has done this for years, I ...")
+    or, as people also write it, by nothing ("As a taxi driver I see ...", "As a bus driver of twenty
+    years I would ask ..."); then no verb of its own may come between, or the "as" clause has a
+    predicate and is no role: "As a van pulled out I braked" (the van's act, "as" is "while")."""
+    _, e = sentence_span(tokens, end)
+    comma = next((j for j in range(end, e) if tokens[j] == ","), None)
+    if comma is not None and tokens[comma + 1 : comma + 2] in (["i"], ["we"]):
+        return comma + 1
+    for j in range(end, comma if comma is not None else e):
+        if tokens[j] in ("i", "we"):
+            return j
+        if _verb_of_its_own(tokens[j]):
+            return None
+    return None
+
+
+#: At most this many words of a name between a role's vehicle and its driver ("a Bus Eireann driver").
+_ROLE_NAME_WORDS = 2
+
+
+def _role_end(tokens: list[str], p, users, kind_at: KindAt) -> int:
+    """Where the role "a <vehicle> ... driver" whose first road-user phrase is ``p`` ends: past a person
+    at the wheel ("driver", "rider") that follows it with only words of a name the reader has no phrase
+    for between ("a Bus Eireann driver", "a Dublin Bus driver": an operator's name), else where ``p``
+    ends. The driver and the vehicle are one role, the narrator's."""
+    at_wheel = next((q for q in users if p.end < q.start <= p.end + _ROLE_NAME_WORDS), None)
+    if at_wheel is None or tokens[at_wheel.head : at_wheel.end] not in ([w] for w in AT_WHEEL):
+        return p.end
+    between = range(p.end, at_wheel.start)
+    return at_wheel.end if all(tokens[j].isalpha() and kind_at(tokens, j) is None for j in between) else p.end
+
+
 def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "As a driver travelling at 50 km/h, I want ...", "As a bus driver pulling away from a stop,
-    we need ...": a clause that opens with "as a <road user>" and no verb of its own (a participle or
-    a comma follows), before a main clause whose subject is "I" or "we", names the narrator by a role:
+    we need ...", "As a taxi driver of ten years I ...": a clause that opens with "as a <road user>"
+    and no verb of its own (a participle, a phrase of its own or a comma follows), before a main clause
+    whose subject is "I" or "we" (:func:`_narrator_after_role`), names the narrator by a role:
     that road user is the ego, its speed the ego's, and the vehicle the role names (a driver's car)
     is the ego again later ("I want the van to slow down"). "As a van pulled out, I braked" ("as" is
     "while": the van has a verb of its own) is someone else."""
@@ -474,24 +514,24 @@ def _user_story(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         k = p.start - 1
         if k < 0 or tokens[k] != "as" or p.det not in ("a", "an") or (k and tokens[k - 1] not in CLAUSE_START):
             continue
-        nxt = tokens[p.end] if p.end < len(tokens) else ""
+        end = _role_end(tokens, p, users, kind_at)
+        nxt = tokens[end] if end < len(tokens) else ""
         participle = nxt.endswith("ing") and "VERB" in lemmas(nxt)
-        if not (participle or nxt in PUNCT or nxt in ("who", "on", "in", "at", "with")):
+        if not (participle or nxt in PUNCT or nxt in ("who", "on", "in", "at", "with", "of", "i", "we")):
             continue
-        _, e = sentence_span(tokens, p.start)
-        comma = next((j for j in range(p.end, e) if tokens[j] == ","), None)
-        if comma is None or tokens[comma + 1 : comma + 2] not in (["i"], ["we"]):
+        subject = _narrator_after_role(tokens, end)
+        if subject is None:
             continue
-        if any(q.start < comma and q is not p and q.start >= p.end and q.kind != "ego" for q in users):
+        if any(q.start < subject and q.start >= end and q.kind != "ego" for q in users):
             continue  # (someone else named in the role's clause: "As a driver behind a bus, ...")
         kind = next(
-            (kind_at(tokens, j)[0] for j in range(p.start, p.end) if (kind_at(tokens, j) or ("",))[0] in VEHICLES),
+            (kind_at(tokens, j)[0] for j in range(p.start, end) if (kind_at(tokens, j) or ("",))[0] in VEHICLES),
             None,
         )
-        if kind is None or tokens[p.head : p.end] == ["driver"]:
+        if kind is None or tokens[p.head : end] == ["driver"]:
             kind = "car" if p.kind in VEHICLES or (participle and lemma_in(nxt, frozenset({"drive"}))) else kind
-        dropped.extend(w for w in tokens[k : p.end] if w not in INDEFINITE)
-        out = [*tokens[:k], "the", "ego", *tokens[p.end :]]
+        dropped.extend(w for w in tokens[k:end] if w not in INDEFINITE)
+        out = [*tokens[:k], "the", "ego", *tokens[end:]]
         return out if kind is None else kind_said_again(out, kind, kind_at, known, dropped)
     return tokens
 
