@@ -1603,7 +1603,9 @@ def chains(clauses: list, tokens: list[str]) -> list:
     clauses = there_is_a_new_one(parked_in_the_lane(state_before_its_noun(clauses, tokens), tokens), tokens)
     clauses = coming_in_the_ego_lane(
         passes_while_the_ego_yields(
-            follows_with_nothing_named(follows_the_ego(on_the_ego_tail(clauses, tokens), tokens), tokens)
+            follows_with_nothing_named(
+                follows_the_ego(at_a_time_gap_behind(on_the_ego_tail(clauses, tokens)), tokens), tokens
+            )
         )
     )
     clauses = round_the_ego(passing_in_front(out_into_the_road(clauses, tokens), tokens), tokens)
@@ -2576,6 +2578,9 @@ _EGO_LANE_PRONOUNS = frozenset(("mine", "ours"))
 _ON_THE_WAY_IN = frozenset(("suddenly", "quickly", "slowly", "straight", "right", "just", "directly", "fully",
                             "partly", "partially", "across", "over", "back", "out", "then", "abruptly",
                             "sharply"))  # fmt: skip
+#: Particles of a move sideways, across what lies between ("came over into us", "swung across into me"):
+#: "into" the ego after one is a move into the ego's place on the road, not a run into its back.
+_SIDEWAYS = frozenset(("over", "across"))
 #: Moves a verb may already be read as that say only that it goes, or goes sideways: where to says which.
 _SAYS_ONLY_THAT_IT_GOES = frozenset(("keep_going", "change_lane", "along_road", "cut_out"))
 
@@ -2598,8 +2603,8 @@ def _lane_said_before(tokens: list[str], start: int, j: int) -> bool:
 def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | None:
     """Where the words end that say the verb at ``tokens[j]`` goes into the ego's lane, path or side,
     or None: any verb + "into"/"onto" + the ego's way (or "mine"/"ours" for a lane said since the road
-    user was named); a verb of entering with the ego's way as its object, after "on", or "in front
-    of" the ego."""
+    user was named, or the ego itself after a particle of moving sideways: "came over into us"); a verb
+    of entering with the ego's way as its object, after "on", or "in front of" the ego."""
     said = lemmas(tokens[j])
     verbs = set(said.get("VERB", ()))
     if not verbs or verbs & {"be", "have", "do"} or tokens[j] in _ON_THE_WAY_IN:
@@ -2621,6 +2626,8 @@ def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | 
     if lead in ("into", "onto") or (entering and lead in ("on", "upon")):
         if _the_ego_way_at(tokens, k + 1):
             return k + 3
+        if tokens[k - 1] in _SIDEWAYS and tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_WORDS:
+            return k + 2  # ("came over into us": sideways, ending where the ego is)
         mine = tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_LANE_PRONOUNS
         if mine and _lane_said_before(tokens, subject_start, j):
             return k + 2
@@ -2754,19 +2761,33 @@ def right_at_the_ego(clauses: list, tokens: list[str]) -> list:
 
 
 #: The rear of the ego a road user behind it is said to sit on ("my back bumper", "our tail").
-_REAR = frozenset(("bumper", "tail", "backside", "rear", "boot", "trunk", "tailgate", "exhaust", "arse", "ass", "butt"))
+_REAR = frozenset(
+    ("bumper", "tail", "backside", "rear", "boot", "trunk", "tailgate", "tailboard", "exhaust", "arse", "ass", "butt")
+)
 #: Words that say a part is the rear one ("back bumper", "rear bumper").
 _BACK = frozenset(("back", "rear"))
 #: Parts that are the rear only when said so (a bumper is also at the front).
 _EITHER_END = frozenset(("bumper",))
+#: The rear parts that are a space a road user can be said to be in ("practically in my boot"): so
+#: close behind that, in the figure, it is inside the ego's car.
+_HOLLOW_REAR = frozenset(("boot", "trunk"))
+#: Prepositions of place a road user keeps itself at the ego's rear by ("on my tail", "off my bumper",
+#: "up my backside"); "up" may lead another ("up on my bumper", "up against our tailgate"), and says
+#: the rear by itself: what comes up on a bumper comes up from behind.
+_AT_THE_REAR = ("off", "on", "up")
+_AFTER_UP = frozenset(("on", "against", "behind"))
 
 
 def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
-    """Where "off / on / up" + the ego's rear ends when said from ``tokens[j]`` ("off my back bumper",
-    "on our tail", "right up my backside"), or None."""
-    if tokens[j] not in ("off", "on", "up"):
+    """Where "off / on / up (on)" + the ego's rear, or "in" + its boot, ends when said from
+    ``tokens[j]`` ("off my back bumper", "on our tail", "right up on my bumper", "in my boot"), or
+    None. A thing only carried there ("my bike in my boot") is no road user, and the caller keeps
+    it: the phrase is read only of a road user said before it."""
+    if tokens[j] not in (*_AT_THE_REAR, "in"):
         return None
     k = j + 1
+    if tokens[j] == "up" and k < len(tokens) and tokens[k] in _AFTER_UP:
+        k += 1  # ("right up on my bumper")
     for owner in _EGO_OWNERS:
         if tuple(tokens[k : k + len(owner)]) == owner:
             k += len(owner)
@@ -2777,8 +2798,10 @@ def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
     k += back
     if k >= len(tokens) or tokens[k] not in _REAR:
         return None
-    if tokens[k] in _EITHER_END and not back:
+    if tokens[k] in _EITHER_END and not back and tokens[j] != "up":
         return None  # ("came through from the right, inches off my bumper": at its front as well)
+    if tokens[j] == "in" and tokens[k] not in _HOLLOW_REAR:
+        return None  # ("a dent in my rear bumper": the place of a mark, no one keeping there)
     return k + 1
 
 
@@ -2842,6 +2865,41 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
                 + [x for x in kept[at:] if x.start >= end]
             )
             break
+        out.append((link, kept))
+    return out
+
+
+#: The units of a time said as a gap ("1.5 s headway", "a 2-second gap"): a gap said in time is one
+#: kept while going, the headway of a follower.
+_TIME_UNITS = frozenset(("s", "sec", "secs", "second", "seconds"))
+
+
+def _a_time_gap(m) -> bool:
+    """Whether mention ``m`` is a gap said in seconds (the reader makes it metres at the speed said)."""
+    return m.slot == "distance" and m.words.split()[-1] in _TIME_UNITS
+
+
+def at_a_time_gap_behind(clauses: list) -> list:
+    """``clauses`` with a road user said behind the ego at a gap in seconds ("HGV behind ego at < 1 s
+    headway", "a van 1 s behind the ego") read as following it: a headway is the time a follower
+    takes to reach where the one ahead is, so a gap said so is kept by one going after the ego,
+    whatever verb (or none) says it. A move of its own said in the clause (an overtake, a cut-in)
+    keeps its reading."""
+    out = []
+    for link, mentions in clauses:
+        gap = next((x for x in mentions if _a_time_gap(x)), None)
+        behind = next((x for x in mentions if x.slot == "relation" and x.value == "behind"), None)
+        subject = _subject_before([x for x in mentions if gap is not None and x.start < gap.start])
+        acts = [x for x in mentions if x.slot == "behaviour"]
+        if gap is None or behind is None or subject is None or subject.start > behind.start:
+            out.append((link, mentions))
+            continue
+        if any(x.value[0] not in _SAYS_ONLY_THAT_IT_GOES for x in acts):
+            out.append((link, mentions))
+            continue
+        follow = replace(gap, slot="behaviour", value=("follow_vehicle", {}))
+        kept = [x for x in mentions if x not in acts]
+        kept.insert(kept.index(gap) + 1, follow)
         out.append((link, kept))
     return out
 

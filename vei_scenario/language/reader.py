@@ -61,6 +61,7 @@ from vei_scenario.language import (
     no_lane_beside,
     off_a_place,
     parked_rows,
+    participle_aside,
     protagonist,
     pull_in_apart,
     report_vehicle,
@@ -2289,6 +2290,14 @@ def _read(text: str) -> Reading:
                 if isinstance(clause_subject, _Actor) and clause_subject.stationary:
                     _apply(replace(m, slot="behaviour", value=("give_way", {})), clause_subject, r, link, added)
                 ignored.append(m.words)
+                prev = m
+                continue
+            if (
+                m.slot in _VERBS
+                and not named
+                and participle_aside.said_of_the_subject_before(scanned, m.start, _actor_at)
+            ):
+                pending.append(m)  # ("The defendant, driving a van, moved ...": the van's driving, not the narrator's)
                 prev = m
                 continue
             if (
