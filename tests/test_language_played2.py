@@ -127,3 +127,48 @@ def test_a_turn_from_another_arm_that_runs_the_red_runs_it_along_the_turn(text, 
     assert write_scenario(layers, "scenario").xosc.count(b"<AssignRouteAction>") == 2  # (the ego's and its turn)
     result = play_layers(layers, tmp_path)
     assert played_problems(result, layers) == []
+
+
+# A road user whose first behaviour is itself a drive (head-on the wrong way, past the ego) moves when
+# the scenario starts: a standing speed read for it ("... stopped right in front of me") is where it ends.
+STANDING_DRIVES = [
+    ("A farmer's pickup driving the wrong way down the lane stopped right in front of me.", "wrong_way"),
+    ("Some idiot in a hatchback going the wrong way up the one-way street stopped nose to nose with me.", "wrong_way"),
+    ("The delivery van overtook us and stopped outside the shop.", "overtake"),
+]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize(("text", "drive"), STANDING_DRIVES)
+def test_a_drive_read_as_standing_goes_at_a_road_pace(text, drive, seed):
+    """Its speed is a road pace, not the standstill the text ends it in."""
+    [adv] = layers_from_text(text, seed)["adversaries"]
+    assert _names(adv)[0] == drive
+    assert float(adv["speed_mps"]) > 5.0
+
+
+@pytest.mark.parametrize(("text", "drive"), STANDING_DRIVES)
+def test_a_drive_read_as_standing_does_what_its_layers_say(text, drive, tmp_path):
+    """Played, the wrong-way driver is head-on in the ego's lane and the overtaker gets ahead of the ego."""
+    layers = layers_from_text(text, 0)
+    assert played_problems(play_layers(layers, tmp_path), layers) == []
+
+
+@pytest.mark.parametrize(
+    ("text", "first"),
+    [
+        ("A car was parked on my side of the road facing me.", "stop"),
+        ("A cyclist coming towards me on the wrong side of the road stopped and waited.", "stop"),
+    ],
+)
+def test_a_road_user_that_only_stands_keeps_standing(text, first):
+    """Guard: one whose first behaviour is standing (parked, stopped) still starts at a standstill."""
+    [adv] = layers_from_text(text, 0)["adversaries"]
+    assert _names(adv)[0] == first and float(adv["speed_mps"]) == 0.0
+
+
+def test_a_wrong_way_driver_with_a_stated_speed_keeps_it():
+    """Guard: a speed said of the wrong-way driver is its speed."""
+    text = "A van doing about 30 km/h came at me on the wrong side of the road."
+    [adv] = layers_from_text(text, 0)["adversaries"]
+    assert _names(adv)[0] == "wrong_way" and abs(float(adv["speed_mps"]) * 3.6 - 30.0) < 1.0

@@ -162,10 +162,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
         if given_speed is None and ego_speed == 0.0 and relation == "behind" and not vulnerable(spec.kind):
             given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
+        if first.NAME in DRIVES and given_speed is not None and given_speed < DRIVES_AT_LEAST_MPS:
+            given_speed = None  # (it drives from the start: a standstill read for it is where it ends, or another's)
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
-        if first.NAME == "run_red_light" and given_speed is not None and given_speed < RUNS_AT_LEAST_MPS:
-            given_speed = None  # (a run of the red is a drive through it: one read as standing goes at a road pace)
         if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:
             given_speed = min(_u(rng, 9.0, 13.0), TYPES[spec.kind][3])  # (its timing holds only below its top speed)
         if (
@@ -343,8 +343,13 @@ def _far_side_gap(reading: Reading) -> bool:
     )  # fmt: skip
 
 
-#: A red-light runner read at less than this (m/s) is given a road pace: standing, it would run no red.
-RUNS_AT_LEAST_MPS = 0.5
+#: Behaviours that are a drive from the road user's first moment: a run of the red through the junction,
+#: a drive head-on in the ego's lane, a pass from behind. Read at a standstill (its "stopped right in front
+#: of me" at the end, or the ego's own stop), such a road user would run no red, never come head-on and
+#: never get past: it is given a road pace instead.
+DRIVES = ("run_red_light", "wrong_way", "overtake")
+#: A road user whose first behaviour is one of :data:`DRIVES` read at less than this (m/s) is standing.
+DRIVES_AT_LEAST_MPS = 0.5
 #: Behaviours that start standing at a junction's stop line and set off when the ego comes.
 WAITING = ("turn_across", "turn_into", "give_way")
 #: Behaviours whose timing is the ego's arrival at the junction.
