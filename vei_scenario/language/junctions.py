@@ -337,12 +337,9 @@ def rides_through_from_a_side(
 ) -> str | None:
     """The arm a rider starts on who crosses the ego's road at a junction from a side with no kerb,
     footway or crossing said, where the side is read as an arm ("approaching from our right on the cross
-    street and entered the junction"), the rider is said to come from that side at a crossroads ("a
-    cyclist coming from my left rode across": a rider takes the road as a vehicle does,
-    :func:`sides.arm_it_comes_from`; at a roundabout it comes round the ring) or runs the red light
-    (``side`` is then given; the red stands at the arm's stop line, not at a kerb): a rider with nothing
-    to place it off the road rides the road, so from that side it comes along the crossing road's
-    carriageway, not off a kerb.
+    street and entered the junction") or the rider runs the red light (``side`` is then given; the red
+    stands at the arm's stop line, not at a kerb): a rider with nothing to place it off the road rides the
+    road, so from that side it comes along the crossing road's carriageway, not off a kerb.
     None (keep the kerb) where the reading has it elsewhere than at that side's kerb, where it is said on
     a kerb, footway or lane, leaves a place beside the road (a path, a driveway), waits, or goes to a side
     (``off_the_road``), and where the ego turns

@@ -1002,7 +1002,6 @@ KERB = (
     "pavement",
     "sidewalk",
     "footpath",
-    "footway",
     "roadside",
     "verge",
     "edge of the road",

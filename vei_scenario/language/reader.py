@@ -2869,12 +2869,10 @@ def _read(text: str) -> Reading:
             a.kerb or a.kerb_side or a.pavement or a.lane_side or a.stationary or a.goes_to or a.out_of_place
         )
         runs_red = any(b[0] == "run_red_light" for b in behaviours)  # (a red at the arm's stop line)
-        # "from the left" at a crossroads is that arm's road; at a roundabout, the ring coming round
-        road_side = a.side if runs_red or (a.came_from and r.map_kind == "crossroad") else None
         if junction:
             spec.relation = (
                 junctions.rides_through_from_a_side(
-                    spec.relation, a.kind, first_act, said_arm or road_side, off_road, r.ego_route
+                    spec.relation, a.kind, first_act, said_arm or (a.side if runs_red else None), off_road, r.ego_route
                 )
                 or spec.relation
             )  # ("a cyclist came through from the right": along the crossing road, not off its kerb)
