@@ -44,9 +44,11 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+from vei_scenario.language.clauses import SENTENCE_END
+from vei_scenario.language.discourse import VULNERABLE
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
-from vei_scenario.language.quantities import OBJECT_PRONOUNS
+from vei_scenario.language.quantities import OBJECT_PRONOUNS, SECONDS
 from vei_scenario.language.reading import ActorSpec
 from vei_scenario.language.settings import FOOT_CROSSINGS, negated
 from vei_scenario.language.sides import OFF_ROAD_PLACES, VEHICLE_PARTS, stated_side
@@ -2603,7 +2605,8 @@ def _lane_said_before(tokens: list[str], start: int, j: int) -> bool:
 def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | None:
     """Where the words end that say the verb at ``tokens[j]`` goes into the ego's lane, path or side,
     or None: any verb + "into"/"onto" + the ego's way (or "mine"/"ours" for a lane said since the road
-    user was named, or the ego itself after a particle of moving sideways: "came over into us"); a verb
+    user was named, or the ego itself after a particle of moving sideways from a lane said since:
+    "a tanker in the nearside lane came over into us"); a verb
     of entering with the ego's way as its object, after "on", or "in front of" the ego."""
     said = lemmas(tokens[j])
     verbs = set(said.get("VERB", ()))
@@ -2626,8 +2629,9 @@ def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | 
     if lead in ("into", "onto") or (entering and lead in ("on", "upon")):
         if _the_ego_way_at(tokens, k + 1):
             return k + 3
-        if tokens[k - 1] in _SIDEWAYS and tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_WORDS:
-            return k + 2  # ("came over into us": sideways, ending where the ego is)
+        sideways = tokens[k - 1] in _SIDEWAYS and tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_WORDS
+        if sideways and _lane_said_before(tokens, subject_start, j):
+            return k + 2  # ("a tanker from the nearside lane came over into us": from beside, where the ego is)
         mine = tokens[k + 1 : k + 2] and tokens[k + 1] in _EGO_LANE_PRONOUNS
         if mine and _lane_said_before(tokens, subject_start, j):
             return k + 2
@@ -2776,14 +2780,23 @@ _HOLLOW_REAR = frozenset(("boot", "trunk"))
 #: the rear by itself: what comes up on a bumper comes up from behind.
 _AT_THE_REAR = ("off", "on", "up")
 _AFTER_UP = frozenset(("on", "against", "behind"))
+#: Verbs whose "up" is their own particle, of where a thing ends ("ended up on my bumper", "wound up
+#: on our boot"): where it came to rest, not a place it keeps behind the ego.
+_UP_OF_RESULT = frozenset(("end", "wind", "finish", "land"))
 
 
 def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
-    """Where "off / on / up (on)" + the ego's rear, or "in" + its boot, ends when said from
-    ``tokens[j]`` ("off my back bumper", "on our tail", "right up on my bumper", "in my boot"), or
-    None. A thing only carried there ("my bike in my boot") is no road user, and the caller keeps
-    it: the phrase is read only of a road user said before it."""
+    """Where "off / on / up (on)" + the ego's rear, or "in" + its boot after a word of degree
+    ("practically in my boot"), ends when said from ``tokens[j]`` ("off my back bumper", "on our
+    tail", "right up on my bumper"), or None. Being in the boot is a figure of closeness only with
+    its degree said: a thing only carried there ("my bike in my boot", "my son's scooter was in my
+    boot") is no road user. An "up" that is the particle of a verb of where a thing ends ("ended up
+    on my bumper") is no place kept."""
     if tokens[j] not in (*_AT_THE_REAR, "in"):
+        return None
+    if tokens[j] == "in" and not (j and _a_degree(tokens, j - 1)):
+        return None
+    if tokens[j] == "up" and j and set(lemmas(tokens[j - 1]).get("VERB", ())) & _UP_OF_RESULT:
         return None
     k = j + 1
     if tokens[j] == "up" and k < len(tokens) and tokens[k] in _AFTER_UP:
@@ -2812,6 +2825,13 @@ _STRETCH = frozenset(("mile", "miles", "km", "kilometre", "kilometres", "kilomet
 _STRETCH_WORDS = 6
 
 
+def _a_degree(tokens: list[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a word of degree of a figure ("practically", "virtually", "all but")."""
+    from vei_scenario.language.outcome import HEDGES
+
+    return tokens[i] in HEDGES or tokens[i - 1 : i + 1] == ["all", "but"]
+
+
 def _behind_the_ego_for_a_stretch(tokens: list[str], j: int) -> int | None:
     """Where "behind" + the ego + "for" + a stretch ends when said from ``tokens[j]`` ("behind us for
     some distance", "behind me for two miles"), or None. Why: a road user kept behind the ego over a
@@ -2819,7 +2839,7 @@ def _behind_the_ego_for_a_stretch(tokens: list[str], j: int) -> int | None:
     if tokens[j] != "behind":
         return None
     k = j + 1 + (tokens[j + 1 : j + 2] == ["the"])
-    if tokens[k : k + 1] not in (["me"], ["us"], ["ego"]) or tokens[k + 1 : k + 2] != ["for"]:
+    if tokens[k : k + 1] == [] or tokens[k] not in _EGO_WORDS or tokens[k + 1 : k + 2] != ["for"]:
         return None
     for m in range(k + 2, min(k + 2 + _STRETCH_WORDS, len(tokens))):
         if tokens[m] in _STRETCH:
@@ -2832,7 +2852,11 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
     "hung on my tail", "right up my backside") or behind it for a stretch ("sitting close behind us for
     some distance") read as following the ego from behind: where it keeps itself, close behind the
     ego, is what following is, whatever verb of staying says it. A verb of contact before it ("hit me
-    on my rear bumper") says where it touched, not where it follows."""
+    on my rear bumper"), or after "up against" it ("came up against our tailgate and hit it"), says
+    where it touched, not where it follows. Following is a going road user's: not one on foot (nor
+    people sat behind the writer in the car), nor a rider kept behind for a stretch (it rides at its
+    own pace), nor one said to stand ("parked behind me for a while"). A side said in the clause
+    ("up on my bumper on the inside") keeps the side."""
     out = []
     for link, mentions in clauses:
         if not mentions:
@@ -2841,12 +2865,23 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
         kept = list(mentions)
         first, last = mentions[0].start, max(x.end for x in mentions)
         for j in range(first, min(last + 6, len(tokens))):
-            end = _the_ego_rear_at(tokens, j) or _behind_the_ego_for_a_stretch(tokens, j)
+            if j >= last and tokens[j] in SENTENCE_END:
+                break  # (the next clause's words are its own)
+            stretch = _behind_the_ego_for_a_stretch(tokens, j)
+            end = _the_ego_rear_at(tokens, j) or stretch
             if end is None:
                 continue
             before = [x for x in kept if x.start < j]
             subject = _subject_before(before)
             if subject is None or any(set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[subject.end : j]):
+                continue
+            if subject.value == "pedestrian" or (stretch and subject.value in VULNERABLE):
+                continue
+            if any(x.slot == "stationary" for x in before):
+                continue
+            if tokens[j + 1 : j + 2] == ["against"] and any(
+                set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[end : last + 1]
+            ):
                 continue
             if any(
                 x.slot == "behaviour" and x.value[0] not in _SAYS_ONLY_THAT_IT_GOES
@@ -2858,10 +2893,11 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
                     "next_": tokens[end] if end < len(tokens) else "", "det": "", "owners": ()}  # fmt: skip
             follow = replace(subject, slot="behaviour", value=("follow_vehicle", {}), **said)
             behind = replace(subject, slot="relation", value="behind", **said)
+            side = any(x.slot == "lane_side" for x in kept if x.start >= end)
             at = kept.index(before[-1]) + 1
             kept = (
                 [x for x in kept[:at] if not (x.slot == "behaviour" and x.start > subject.start)]
-                + [follow, behind]
+                + ([follow] if side else [follow, behind])
                 + [x for x in kept[at:] if x.start >= end]
             )
             break
@@ -2869,19 +2905,15 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
     return out
 
 
-#: The units of a time said as a gap ("1.5 s headway", "a 2-second gap"): a gap said in time is one
-#: kept while going, the headway of a follower.
-_TIME_UNITS = frozenset(("s", "sec", "secs", "second", "seconds"))
-
-
 def _a_time_gap(m) -> bool:
     """Whether mention ``m`` is a gap said in seconds (the reader makes it metres at the speed said)."""
-    return m.slot == "distance" and m.words.split()[-1] in _TIME_UNITS
+    return m.slot == "distance" and m.words.split()[-1] in SECONDS
 
 
 def at_a_time_gap_behind(clauses: list) -> list:
-    """``clauses`` with a road user said behind the ego at a gap in seconds ("HGV behind ego at < 1 s
-    headway", "a van 1 s behind the ego") read as following it: a headway is the time a follower
+    """``clauses`` with a road user said behind the ego at a gap in seconds ("Ego at 60 km/h. HGV behind
+    ego at < 1 s headway", "a van 1 s behind the ego"; a gap the reader has made metres at the ego's
+    speed said, so with no speed said it stays a place) read as following it: a headway is the time a follower
     takes to reach where the one ahead is, so a gap said so is kept by one going after the ego,
     whatever verb (or none) says it. A move of its own said in the clause (an overtake, a cut-in)
     keeps its reading."""

@@ -320,7 +320,8 @@ def ranges(text: str) -> str:
 #: Words that make a number of seconds a time gap between two road users ("a 2 s gap", "1.5 s headway",
 #: "3 seconds ahead"), not a time of the story ("at t = 3 s", "TTC 1.5 s", "for 2 seconds").
 HEADWAY_WORDS = frozenset({"gap", "headway", "ahead", "behind", "apart", "back", "following", "interval"})
-_SECONDS = frozenset({"s", "sec", "secs", "second", "seconds"})
+#: The units of a time (a gap said in time, "1.5 s headway", is the headway of a follower).
+SECONDS = frozenset({"s", "sec", "secs", "second", "seconds"})
 
 
 def headway_m(tokens: list[str], i: int) -> float | None:
@@ -328,7 +329,7 @@ def headway_m(tokens: list[str], i: int) -> float | None:
     ego's speed where it is said as the ego's, else the speed said last before it with its unit (a time
     gap is the time one takes to reach where the other is); None where it is no time gap or no speed
     is said before it."""
-    if tokens[i + 1 : i + 2] == [] or tokens[i + 1] not in _SECONDS:
+    if tokens[i + 1 : i + 2] == [] or tokens[i + 1] not in SECONDS:
         return None
     nxt = tokens[i + 2 : i + 3] if tokens[i + 2 : i + 3] != ["time"] else tokens[i + 3 : i + 4]  # ("1.5 s time gap")
     before = tokens[max(i - 6, 0) : i]

@@ -164,6 +164,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
         if first.NAME in DRIVES and given_speed is not None and given_speed < DRIVES_AT_LEAST_MPS:
             given_speed = None  # (it drives from the start: a standstill read for it is where it ends, or another's)
+        if given_speed is None and first.NAME in DRIVES and ego_speed == 0.0 and vulnerable(spec.kind):
+            given_speed = min(_u(rng, lo, hi), TYPES[spec.kind][3])  # (not the ego's standstill: a rider's pace)
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
         if given_speed is None and relation in ("junction_left", "junction_right") and first.NAME not in WAITING:
