@@ -127,6 +127,7 @@ def test_a_role_with_a_verb_that_is_also_a_noun_is_someone_else(text: str, kind:
         ("As a taxi driver I see a lot. Last night a van cut in front of me and I braked hard.", ["van"]),
         ("As a bus driver on the school run I had a van cut in front of me.", ["van"]),
         ("As a bus driver of twenty years I would ask cyclists to think.", []),
+        ("As a cyclist who rides every day I was passed too close by a lorry.", ["truck"]),
     ],
 )
 def test_a_role_without_a_comma_stays_the_narrators(text: str, expected: list[str]) -> None:

@@ -478,10 +478,12 @@ def _narrator_after_role(tokens: list[str], end: int) -> int | None:
     comma = next((j for j in range(end, e) if tokens[j] == ","), None)
     if comma is not None and tokens[comma + 1 : comma + 2] in (["i"], ["we"]):
         return comma + 1
+    relative = False  # (after "who"/"that" a verb is the relative clause's: "As a cyclist who rides daily I")
     for j in range(end, comma if comma is not None else e):
         if tokens[j] in ("i", "we"):
             return j
-        if _verb_of_its_own(tokens[j]) or _verb_after_a_phrase(tokens, j):
+        relative = relative or tokens[j] in ("who", "that")
+        if _verb_of_its_own(tokens[j]) or not relative and _verb_after_a_phrase(tokens, j):
             return None
     return None
 
