@@ -48,9 +48,10 @@ _AWAY = frozenset(("ahead", "clear", "back", "behind", "before", "away", "off", 
 _TIMES = frozenset(("morning", "afternoon", "evening", "night", "shift", "summer", "winter", "autumn", "spring"))
 _LEVELS = {"high": DANGEROUS, "medium": MODERATE, "moderate": MODERATE, "mid": MODERATE, "low": SAFE}
 _LABELS = frozenset(("crit", "criticality", "severity", "criticity"))
-_BREAKS = frozenset(".;!?,") | {"but", "and", "then", "so", "though", "although", "because"}
+#: Words that end a clause: what one clause says on the scales is not said of the next.
+BREAKS = frozenset(".;!?,") | {"but", "and", "then", "so", "though", "although", "because"}
 #: Degree words of a place exactly there ("right in front", "straight across", "bang in front").
-_EXACTLY = frozenset(("right", "straight", "directly", "just", "bang", "smack", "slap", "dead", "square", "squarely"))
+EXACTLY = frozenset(("right", "straight", "directly", "just", "bang", "smack", "slap", "dead", "square", "squarely"))
 #: The ego as what an act ends at, and the parts of its vehicle an act crosses ("across our bonnet").
 _EGO = frozenset(("me", "us", "ego", "i", "we"))
 _EGO_PARTS = frozenset(("bonnet", "hood", "nose", "bumper", "bows", "front", "grille", "wheels", "wheel"))
@@ -121,7 +122,7 @@ def _at_the_ego(words: list[str], i: int) -> bool:
         after = words[i + 1 : i + 5]
     else:
         return False
-    exact = i > 0 and words[i - 1] in _EXACTLY
+    exact = i > 0 and words[i - 1] in EXACTLY
     k = i - 1 if exact else i
     prev = words[k - 1] if k > 0 else ""
     if not prev or prev in _STANDING or _noun_only(prev):
@@ -146,8 +147,8 @@ _FORCING = frozenset(("force", "forces", "forced", "forcing"))
 _FORCED_INTO = frozenset(("to", "into", "onto", "off", "out", "across", "over", "up"))
 #: Metre units (the reader gives feet and car lengths in metres) and the most left to spare that is a
 #: dangerous margin: under a car's length and a half at any speed worth telling.
-_METRES = frozenset(("m", "metre", "metres", "meter", "meters"))
-_SMALL_SPARE_M = 5.0
+METRES = frozenset(("m", "metre", "metres", "meter", "meters"))
+SMALL_SPARE_M = 5.0
 
 
 def _forced_ego(words: list[str], i: int) -> bool:
@@ -170,9 +171,9 @@ def _small_spare(words: list[str], i: int) -> bool:
         return False
     return (
         words[i + 1 : i + 2] != []
-        and words[i + 1] in _METRES
+        and words[i + 1] in METRES
         and words[i + 2 : i + 4] == ["to", "spare"]
-        and (value <= _SMALL_SPARE_M)
+        and (value <= SMALL_SPARE_M)
     )
 
 
@@ -192,7 +193,7 @@ def manner_cues(tokens: list[str]) -> list[str]:
     """What each clause of ``tokens`` (the reader's normalised, lowercased tokens) says on the scales:
     a class, "position" or "denied" (a denied danger), in text order."""
     cues: list[str] = []
-    for words, _ in split(tokens, _BREAKS):
+    for words, _ in split(tokens, BREAKS):
         for i, w in enumerate(words):
             if _denied_danger(words, i):
                 cues.append("denied")

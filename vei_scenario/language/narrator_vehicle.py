@@ -18,6 +18,7 @@ the person-at-a-wheel nouns ("driver", "rider").
 
 from __future__ import annotations
 
+from vei_scenario.language.discourse import DETERMINERS
 from vei_scenario.language.ego import (
     AT_CONTROLS,
     AT_WHEEL,
@@ -477,12 +478,29 @@ def _narrator_after_role(tokens: list[str], end: int) -> int | None:
     comma = next((j for j in range(end, e) if tokens[j] == ","), None)
     if comma is not None and tokens[comma + 1 : comma + 2] in (["i"], ["we"]):
         return comma + 1
+    relative = False  # (after "who"/"that" a verb is the relative clause's: "As a cyclist who rides daily I")
     for j in range(end, comma if comma is not None else e):
         if tokens[j] in ("i", "we"):
             return j
-        if _verb_of_its_own(tokens[j]):
+        relative = relative or tokens[j] in ("who", "that")
+        if _verb_of_its_own(tokens[j]) or not relative and _verb_after_a_phrase(tokens, j):
             return None
     return None
+
+
+#: Words that open a noun phrase in a role's phrase ("in a hurry", "on his phone", "of twenty years").
+_PHRASE_OPENERS = DETERMINERS | {"on", "in", "at", "with", "of"}
+
+
+def _verb_after_a_phrase(tokens: list[str], j: int) -> bool:
+    """Whether ``tokens[j]``, a word that may be a verb or a noun ("cut", "cuts"), is a verb after the
+    phrase a role goes on with ("As a taxi driver in a hurry cut in I braked"): not the noun that
+    heads a phrase opened before it ("in a hurry", "on his phone") nor the last noun before "I" ("on
+    the school run I"), nor a participle ("pulling away")."""
+    word = tokens[j]
+    if not word.isalpha() or word.endswith("ing") or "VERB" not in lemmas(word):
+        return False
+    return tokens[j - 1] not in _PHRASE_OPENERS and tokens[j + 1 : j + 2] not in (["i"], ["we"])
 
 
 #: At most this many words of a name between a role's vehicle and its driver ("a Bus Eireann driver").

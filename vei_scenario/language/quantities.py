@@ -936,7 +936,7 @@ def owners(
             return (owner,)
         if tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause
-        if tokens[j + 1] == "at" and unit and k >= 0 and judged_at(tokens[k]):
+        if tokens[j + 1] == "at" and unit and k >= 0 and judged_at(tokens, k):
             return (owner,)  # "estimates the scooter at 15 mph", "clocked the van at 50 mph": the object's
     subject = mention_ending_at(j - 1) if unit and j and tokens[j].endswith("ing") else None
     if subject is not None and subject and tokens[subject - 1] == "with":
@@ -1047,9 +1047,22 @@ def _be_at(tokens: list[str], i: int) -> int | None:
 JUDGING_VERBS = frozenset({"estimate", "clock", "judge", "gauge", "put", "reckon", "guess", "place"})
 
 
-def judged_at(word: str) -> bool:
-    """Whether ``word`` is a verb of judging a quantity (:data:`JUDGING_VERBS`) in any of its forms."""
-    return bool(JUDGING_VERBS & set(lemmas(word).get("VERB", ())))
+#: Of the verbs of judging, those British English also says of noticing ("I only clocked the cyclist
+#: at 30 mph": saw him while doing 30 mph): said by the narrator, the speed is the narrator's.
+_ALSO_NOTICING = frozenset({"clock"})
+#: How many words (adverbs, auxiliaries: "I only clocked", "we didn't clock") may stand between the
+#: narrator and a verb of noticing.
+_NOTICER_REACH = 3
+
+
+def judged_at(tokens: list[str], k: int) -> bool:
+    """Whether ``tokens[k]`` is a verb of judging a quantity (:data:`JUDGING_VERBS`) in any of its forms;
+    "clock" only where the narrator ("I", "we") is not its subject: a camera or an officer that clocks
+    a road user measures its speed, a narrator who clocks one notices it."""
+    verbs = JUDGING_VERBS & set(lemmas(tokens[k]).get("VERB", ()))
+    if verbs and verbs <= _ALSO_NOTICING:
+        return not {"i", "we"} & set(tokens[max(k - _NOTICER_REACH, 0) : k])
+    return bool(verbs)
 
 
 def compared(tokens: list[str], k: int) -> bool:
