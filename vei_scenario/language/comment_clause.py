@@ -12,6 +12,7 @@ narrator ("I think I was doing 40"), nothing changes. A comment said between a v
 
 from __future__ import annotations
 
+from vei_scenario.language.discourse import DETERMINERS, PRONOUNS
 from vei_scenario.language.quantities import OPINION_AUXILIARIES, OPINION_VERBS, is_number
 
 #: The first person who comments ("I reckon", "we believe").
@@ -22,9 +23,7 @@ _FINITE = frozenset(
     {"was", "were", "is", "are", "had", "has", "must", "would", "could", "might", "'d", "'s", "did"}
 )  # fmt: skip
 #: Words that open a subject of the clause judged: a pronoun or a determiner of a noun phrase.
-_SUBJECT_OPENERS = frozenset(
-    {"he", "she", "it", "they", "i", "we", "you", "the", "a", "an", "this", "that", "his", "her", "their", "our", "my"}
-)  # fmt: skip
+_SUBJECT_OPENERS = DETERMINERS | PRONOUNS | {"you"}
 #: How many words a subject opened so may run to before its finite verb ("the white transit van was").
 _SUBJECT_REACH = 5
 #: Words that end the clause judged: its speed must come before one.

@@ -63,6 +63,8 @@ KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 #: ``known(tokens, i)``: whether the reader has any phrase starting at ``i``.
 Known = Callable[[list[str], int], bool]
 
+#: The articles, one another's forms in a phrase.
+ARTICLES = frozenset({"a", "an", "the"})
 INDEFINITE = frozenset({"a", "an", "some", "another", "one", "this"})  # ("this guy on a bike": new)
 DEFINITE = frozenset({"the", "that", "these", "those"})
 POSSESSIVE = frozenset({"my", "our", "his", "her", "their", "its", "your"})

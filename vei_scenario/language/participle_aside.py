@@ -15,10 +15,9 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from vei_scenario.language.clauses import sentence_start, sentence_stop
+from vei_scenario.language.discourse import ARTICLES, DETERMINERS, PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 
-#: Articles that open the subject's noun phrase ("the defendant", "a man").
-_ARTICLES = frozenset(("the", "a", "an"))
 #: How many words the subject's noun phrase may have, its article included ("the other motorist").
 _SUBJECT_WORDS = (2, 4)
 #: How many words may stand between the participle and its road user ("driving a Scania HGV").
@@ -26,7 +25,7 @@ _TO_THE_OBJECT = 3
 #: A relative clause said in place of the bare participle (", who was driving a van,").
 _RELATIVE = (("who", "was"), ("who", "is"))
 #: Words that open a noun phrase or stand for one: after the closing comma they start a new subject.
-_NOT_A_VERB = frozenset(("i", "we", "he", "she", "they", "it", "you", "the", "a", "an", "this", "that"))
+_NOT_A_VERB = DETERMINERS | PRONOUNS | {"you"}
 
 
 def _comma_before(tokens: list[str], i: int) -> int | None:
@@ -47,7 +46,7 @@ def said_of_the_subject_before(tokens: list[str], i: int, road_user_at: Callable
         return False
     start = sentence_start(tokens, opening)
     low, high = _SUBJECT_WORDS
-    if tokens[start] not in _ARTICLES or not low <= opening - start <= high:
+    if tokens[start] not in ARTICLES or not low <= opening - start <= high:
         return False
     if not any(road_user_at(tokens, j) for j in range(i + 1, i + 2 + _TO_THE_OBJECT)):
         return False

@@ -142,7 +142,7 @@ _TOKEN_BRACKETS = re.compile(_TOKEN.pattern + "|[()]")  # (for discourse: a name
 
 
 #: The articles, one another's forms in a phrase.
-_ARTICLES = frozenset(("a", "an", "the"))
+_ARTICLES = discourse.ARTICLES
 
 
 @lru_cache(maxsize=4096)
