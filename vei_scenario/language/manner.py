@@ -244,10 +244,12 @@ def stated_manner(tokens: list[str]) -> str | None:
 def _ego_evaded(tokens: list[str]) -> bool:
     """Whether the text says the ego evaded ("I had to stamp on the brakes", "we braked sharply", "I
     swerved hard"), as the outcome reader reads it: an act that leaves the ego only an emergency
-    reaction is a dangerous one, where no scale says how close it came."""
+    reaction is a dangerous one, where no scale says how close it came. A wide margin said ("overtook
+    me with room to spare") outranks it, as it does in the outcome ("brakes squealing for no reason")."""
     from vei_scenario.language.outcome import outcome_cues
 
-    return any(c.kind == "evade" for c in outcome_cues(" ".join(tokens)))
+    kinds = {c.kind for c in outcome_cues(" ".join(tokens))}
+    return "evade" in kinds and "safe" not in kinds
 
 
 def apply_manner(cls: str | None, specs: list) -> None:

@@ -1279,13 +1279,17 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
 
 
 #: The road markings a stop is made at: a stop or give-way line, the yellow box of a junction. (A
-#: crossing or a path is not one: "stopped short of the crossing" as a rider came out is close.)
+#: crossing or a path is not one: "stopped short of the crossing" as a rider came out is close, and so
+#: is one short of its markings, "the zebra lines".)
 _STOPPING_MARKINGS = frozenset(("line", "lines", "box", "markings"))
 
 
 def _short_of_a_marking(words: list[str], i: int) -> bool:
     """Whether "short of" at ``i`` has a road marking for its object ("stopped short of the stop line",
-    "pulled up short of the box"): where the stop was made, not a margin left to anyone."""
+    "pulled up short of the box"): where the stop was made, not a margin left to anyone. Not the
+    markings of a foot crossing ("the zebra lines"), nor a line or queue of something ("a line of
+    schoolchildren", "the line of traffic"): the head followed by "of" is a quantity, and what it
+    counts is the object."""
     if words[i] != "short" or words[i + 1 : i + 2] != ["of"]:
         return False
     phrase = []
@@ -1293,7 +1297,13 @@ def _short_of_a_marking(words: list[str], i: int) -> bool:
         if w in _PHRASE_ENDS:
             break
         phrase.append(w)
-    return bool(phrase) and phrase[-1] in _STOPPING_MARKINGS
+    counted = words[i + 2 + len(phrase) : i + 3 + len(phrase)] == ["of"]
+    return (
+        bool(phrase)
+        and phrase[-1] in _STOPPING_MARKINGS
+        and not counted
+        and not (FOOT_CROSSINGS | {"crossing"}) & set(phrase)
+    )
 
 
 #: Adverbs that say a margin was wide ("well short", "comfortably back").
@@ -2441,6 +2451,9 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 and not (_scoped(words, i, _HYPOTHETICAL, 4) or clause.after_if)  # ("before someone gets killed")
                 and not _predicted(words, i)  # ("somebody is going to be killed there")
             ):
+                if words[i - 1] in HEDGES:
+                    add("hedged")  # ("the boy stepped back and was nearly killed": it was not)
+                    continue
                 add("denied" if _denied_before(words, i) else "contact")  # ("a cyclist was seriously injured")
                 continue
             if w in _HARM_NOUNS and (_denied_before(words, i) or _scoped(words, i, ("without",), 3)):
