@@ -81,6 +81,8 @@ FIRST = {
     "language_independent_z28.json": ((50, 50, 11, 40), "sealed for a round of reader work"),
     "language_independent_z29.json": ((50, 50, 5, 41), "sealed for a round of reader work"),
     "language_independent_z30.json": ((50, 49, 3, 46), "sealed for a round of reader work"),
+    "language_independent_z31.json": ((50, 50, 11, 45), "sealed for a round of reader work"),
+    "language_independent_z32.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
 }
 
 
