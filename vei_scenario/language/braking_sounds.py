@@ -35,6 +35,11 @@ _BENDS = frozenset(("bend", "bends", "corner", "corners", "curve", "curves"))
 _HABITUAL = frozenset(("always", "usually", "normally", "often", "sometimes", "whenever", "every", "bit"))
 
 
+def _a_stop_verb(word: str) -> bool:
+    """Whether ``word`` is a verb of coming to a stop ("stopped", "halted", "braking", "pulled")."""
+    return bool(_STOPPING & set(lemmas(word).get("VERB", ())))
+
+
 def _lemma_of(word: str, lemma: str, drawn_out: re.Pattern[str]) -> bool:
     """Whether ``word`` is a form of ``lemma`` or its drawn-out spelling."""
     return any(lemma in forms for forms in lemmas(word).values()) or drawn_out.fullmatch(word) is not None
@@ -72,7 +77,7 @@ def _ends_in_a_stop(words: list[str], i: int) -> bool:
     if words[i + 1 : i + 2] == ["to"] and set(words[i + 2 : i + 5]) & _STOP_NOUNS:
         return True
     before = words[max(0, i - 5) : i]
-    return "with" in before and any(_STOPPING & set(lemmas(w).get("VERB", ())) for w in before)
+    return "with" in before and any(_a_stop_verb(w) for w in before)
 
 
 def _cornering(words: list[str], i: int) -> bool:
@@ -81,7 +86,7 @@ def _cornering(words: list[str], i: int) -> bool:
     after = words[i + 1 :]
     if after[:1] and after[0] in _ROUND:
         return True
-    stopped = any(_STOPPING & set(lemmas(w).get("VERB", ())) for w in words)
+    stopped = any(_a_stop_verb(w) for w in words)
     return bool(_BENDS & set(after)) and not stopped
 
 

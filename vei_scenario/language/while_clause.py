@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.ego import BE, FIRST_PERSON, NARRATOR_INVOLVED
 from vei_scenario.language.lemmas import lemmas
 
@@ -45,10 +46,7 @@ def main_subject(subject: Any, tokens: list[str], at: int) -> Any:
     from: ``subject`` (the reader's, the one named last), or None when that clause only says the
     narrator's speed or state ("I was doing 30", "I was cruising at 60", "I kept my speed", "following a
     bus" once the reader has taken the narrator's "I was"): then the "while" clause is what goes on."""
-    start = at
-    while start > 0 and tokens[start - 1] not in _SENTENCE_ENDS:
-        start -= 1
-    words = tokens[start:at]
+    words = tokens[sentence_start(tokens, at, _SENTENCE_ENDS) : at]
     if words and words[0].endswith("ing") and "VERB" in lemmas(words[0]) and "," not in words:
         return None  # ("I was following a bus", the narrator's words already read: "following a bus")
     if not words or words[0] not in FIRST_PERSON:
@@ -71,10 +69,8 @@ def goes_on_from_the_main_clause(
     if sum(role == "subject" for _, role in background) != 1:
         return False
     if main == "ego" and tokens is not None:
-        end = mentions[0].start
-        while end < len(tokens) and tokens[end] not in _SENTENCE_ENDS:
-            end += 1
-        if any(w in NARRATOR_INVOLVED for w in tokens[mentions[0].start : end]):
+        start = mentions[0].start
+        if any(w in NARRATOR_INVOLVED for w in tokens[start : sentence_stop(tokens, start, _SENTENCE_ENDS)]):
             return False
     first = next((m for m in mentions[1:] if m.slot not in ("punct", "criticality")), None)
     return first is not None and first.slot not in ("actor", "pronoun", "count")
