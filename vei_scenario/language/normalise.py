@@ -43,9 +43,9 @@ _UNIT_AFTER = re.compile(
 #: reader reads a bare number after "at", "doing", "about" as km/h, and one after "on" where a verb of
 #: keeping a speed says so.
 _SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately|on)\s+$")
-#: "at" or "doing", an article and one modifier before a number in words ("at a cautious thirty", "doing a
-#: steady sixty"): a speed, as "at a steady 50" in figures is.
-_MODIFIED_SPEED_BEFORE = re.compile(r"\b(?:at|doing)\s+an?\s+[a-z]+\s+$")
+#: "at" or "doing", an article and one or two modifiers before a number in words ("at a cautious thirty",
+#: "doing a steady sixty", "at a very sensible sixty-five"): a speed, as "at a steady 50" in figures is.
+_MODIFIED_SPEED_BEFORE = re.compile(r"\b(?:at|doing)\s+an?\s+(?:[a-z]+\s+)?[a-z]+\s+$")
 #: A guess between a verb of going and a number in words ("doing, I don't know, forty", "going probably
 #: sixty"), or the limit said before its number ("doing the limit, seventy"): the number is a speed.
 _GUESS_BEFORE = re.compile(
@@ -122,7 +122,7 @@ def _numbers_in_words(text: str) -> str:
         before = before or _CHOICE_BEFORE.search(text, max(0, m.start() - 40), m.start())
         before = before or _GUESS_BEFORE.search(text, max(0, m.start() - 40), m.start())
         before = before or _SPEED_AFTER.match(text, m.end())  # ("sixty speed only")
-        before = before or _MODIFIED_SPEED_BEFORE.search(text, max(0, m.start() - 30), m.start())
+        before = before or _MODIFIED_SPEED_BEFORE.search(text, max(0, m.start() - 40), m.start())
         if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)

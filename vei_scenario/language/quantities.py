@@ -225,6 +225,9 @@ _RANGE = re.compile(
 _UNITS_AHEAD = r"(?=\s*(?:km/h|kph|kmh|mph|m/s|m|metres|meters)\b)"
 #: "40ish mph", "70-odd mph", "30 plus km/h": a hedge between a number and its unit.
 _HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus|or so)\b" + _UNITS_AHEAD)
+#: "doing 50ish", "did 40-ish in the left lane": a bare speed hedged after it, after a verb of going (or
+#: "at"), is about that number; "a 40ish man" (an age) has no such verb before it.
+_HEDGED_BARE = re.compile(r"\b(doing|going|did|driving|travelling|traveling|riding|cruising|at)\s+(\d+)\s*-?\s*ish\b")
 #: "40-something mph": a number in the decade of a round one, about its middle.
 _SOMETHING = re.compile(r"\b([1-9])0\s*-?\s*something\b" + _UNITS_AHEAD)
 #: "at 40 to 50 km/h", "doing about 30 to 40 mph": a choice of two after a word of a speed held, its
@@ -233,15 +236,16 @@ _CHOICE_TO = re.compile(
     r"\b(at|about|around|roughly|approximately|approx|doing|going|travelling|traveling|of)\s+"
     r"(\d+(?:\.\d+)?)\s+to\s+(\d+(?:\.\d+)?)" + _UNITS_AHEAD
 )
-#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70", "doing 50 or 60": a range or a choice
-#: said bare after a verb of going (or "at"), its unit the text's, with no clock, age or measure after it
-#: ("at 3-4 pm").
+#: "doing 30-35", "going between 40 and 50", "travelling 60 to 70", "doing 50 or 60", "doing about 30,
+#: 35": a range or a choice said bare after a verb of going (or "at"), its unit the text's, with no clock,
+#: age or measure after it ("at 3-4 pm", "doing 30, 40 m behind"). A talker gives a range with a comma
+#: as a writer does with a dash; a falling pair ("going 50, 20 faster than ...") is no range.
 _BARE_RANGE = re.compile(
     r"\b(doing|going|travelling|traveling|driving|riding|cruising|at)"
     r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
-    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and|or)\s*(\d+(?:\.\d+)?)\b"
+    r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and|or|,)\s*(\d+(?:\.\d+)?)\b"
     r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
-    r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b|miles?\b))"
+    r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b(?!/h)|miles?\b))"
 )
 
 
@@ -299,8 +303,9 @@ def ranges(text: str) -> str:
     a change of speed, not a range, and stays; a range said bare after a verb of going ("doing 30-35") is
     one too ("50/20 km/h" is no range: a test's two speeds, the ego's and the target's). A number hedged
     after it ("40ish mph", "30 or so mph",
-    "30 mph-ish") or said by its decade ("the high 60s mph", "40-something mph") is about that number."""
+    "30 mph-ish", "doing 50ish") or said by its decade ("the high 60s mph", "40-something mph") is about that number."""
     text = _UNIT_ISH.sub(r"\1", _HEDGED_AFTER.sub(r"about \1", text))
+    text = _HEDGED_BARE.sub(r"\1 about \2", text)
     text = _SOMETHING.sub(lambda m: f"about {m.group(1)}5", text)
     text = _CHOICE_TO.sub(lambda m: f"{m.group(1)} about {(float(m.group(2)) + float(m.group(3))) / 2:g}", text)
     text = _BARE_RANGE.sub(_bare_range, text)
@@ -509,8 +514,20 @@ WHERE_AFTER_SPEED = frozenset(
 
 def after_at(tokens: list[str], i: int) -> bool:
     """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
-    ("at a steady 50", "doing a brisk 30"): a speed, as "at 50" is."""
-    return i >= 3 and tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing") and tokens[i - 1].isalpha()
+    ("at a steady 50", "doing a brisk 30"), or a word that describes it before that ("at a nice steady
+    50", "at a very sensible 65"): a speed, as "at 50" is. The first of two words is then an adjective
+    or an adverb and no noun, so a place named there ("at the old station 12 ...") stays no speed."""
+    if i < 3 or not tokens[i - 1].isalpha():
+        return False
+    if tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing"):
+        return True
+    return i >= 4 and tokens[i - 3] in _ARTICLES and tokens[i - 4] in ("at", "doing") and _describes(tokens[i - 2])
+
+
+def _describes(word: str) -> bool:
+    """Whether ``word`` is only an adjective or an adverb ("nice", "very"), never a noun ("old", "station")."""
+    said = lemmas(word)
+    return bool({"ADJ", "ADV"} & set(said)) and "NOUN" not in said
 
 
 #: Verbs of keeping a speed "on" a number (lemmas): "sitting on 110", "sat on 70", "cruising on 100".
@@ -673,6 +690,17 @@ def road_number_written_whole(text: str) -> bool:
     Lincoln", "on m6 southbound"): a road of a country that signs miles per hour, where the tokens lose
     the "a" of "A46" as an article at the start of a sentence or with no "the" before it."""
     return any(not m.group("make") for m in _ROAD_NUMBER.finditer(text))
+
+
+#: The class of a British main road written with its hyphen ("on the A-road", "quiet A-roads"), which the
+#: tokens read as "a road" (the B-road keeps its letter there, and :func:`miles_country` reads it).
+_A_ROAD = re.compile(r"(?<![\w-])a-roads?\b")
+
+
+def a_road_named(text: str) -> bool:
+    """Whether ``text`` (lowercased) names the British class of main road, "A-road": a road of a country
+    that signs miles per hour, as "the A46" is (:func:`road_number_written_whole`)."""
+    return _A_ROAD.search(text) is not None
 
 
 def imperial_lengths(text: str) -> bool:

@@ -797,9 +797,11 @@ def _changes_speed_before(tokens: list[str], k: int) -> bool:
 #: it, a heading ("Drive 3 - please read", "Run 2:"), not a speed: a writer opening with their speed says
 #: the verb's -ing or past form ("Driving 30, a kid ...", "Drove 40 down ...") or a unit.
 _HEADING_VERBS = frozenset({"drive", "go", "travel", "run", "ride"})
-#: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when").
+#: Verbs of going after which a bare number is a speed ("the ego goes 50, ...", "driving 30 when"), and
+#: "did"/"does", the finite forms of "doing 50" ("we did 40 along the main road", "he does 60 here").
 _MOTION_BEFORE_SPEED = frozenset(
-    "go goes going went drive drives driving drove travel travels travelling traveling travelled traveled".split()
+    "go goes going went drive drives driving drove travel travels travelling traveling travelled traveled did "
+    "does".split()
 )
 
 
@@ -844,6 +846,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     left_hand, ring = sides.drives_on_left(tokens, text), "roundabout" in tokens
     imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
     imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
+    imperial = imperial or Q.a_road_named(text.lower())  # ("on the A-road": a British road by its class)
     written = re.findall(r"[a-z]+", plain_letters(text.lower()))  # (as written, before any is read as another)
     imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
     imperial = imperial or road_called_by_its_limit(tokens)  # ("doing 40 in a 30": a British town road)
