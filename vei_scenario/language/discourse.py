@@ -50,6 +50,7 @@ from vei_scenario.language.scenery import absent, vehicle_modifiers
 from vei_scenario.language.vocabulary import IN_LINE
 from vei_scenario.language.who import (
     THINGS_FOR_VEHICLES,
+    TRAVEL_VERBS,
     make_and_model,
     person_with_vehicle,
     travel_modes,
@@ -389,9 +390,10 @@ def _riders(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
             out.append(tokens[i])
             i += 1
             continue
-        person_start, counted = _person_before(out, kind_at, known)
+        going = _going_words(out, kind_at)  # ("a worker going home on e-scooter": the worker, not "home")
+        person_start, counted = (None, False) if going else _person_before(out, kind_at, known)
         place: list[str] = []  # ("the guy in front in a red van": where the person is, said of the vehicle)
-        n = _place_words(out)
+        n = _place_words(out) or going
         if person_start is None and n and len(out) > n:
             person_start, counted = _person_before(out[:-n], kind_at, known)
             place = out[-n:] if person_start is not None and not counted else []
@@ -554,6 +556,24 @@ _PLACE_PHRASES = (
 def _place_words(out: list[str]) -> int:
     """How many words at the end of ``out`` say where someone is ("in front", "behind me"), else 0."""
     return next((len(p) for p in _PLACE_PHRASES if tuple(out[-len(p) :]) == p), 0)
+
+
+#: How many words back from "on" a participle of going may stand ("heading back to the depot on").
+_GOING_SPAN = 6
+
+
+def _going_words(out: list[str], kind_at: KindAt) -> int:
+    """How many words at the end of ``out`` are a participle of going and where to ("going home",
+    "heading back to the depot", "travelling to work"), else 0: said between a person and what they
+    ride ("a worker going home on e-scooter"), they tell where the rider goes, not who rides. No mark
+    and no road user's noun may stand among them ("a man crossing, then a bike")."""
+    for back in range(1, min(_GOING_SPAN, len(out)) + 1):
+        w = out[-back]
+        if w in PUNCT or kind_at(out, len(out) - back) is not None:
+            return 0
+        if w.endswith("ing") and set(lemmas(w).get("VERB", ())) & TRAVEL_VERBS:
+            return back
+    return 0
 
 
 def _person_before(out: list[str], kind_at: KindAt, known: Known) -> tuple[int | None, bool]:
@@ -721,9 +741,18 @@ ANIMAL_WORDS = frozenset(ANIMALS) - {"animal"}
 RIDE_VERBS = frozenset({"ride", "pedal", "drive", "scoot"})
 
 
+def _by_its_object(tokens: list[str], j: int, head: int | None) -> bool:
+    """Whether the vehicle's noun at ``head`` is the object of the verb whose words after it start at
+    ``j``: no preposition of riding stands between ("pushing a bike" is; "going home on e-scooter" is
+    not: there the person rides it, and a verb of going says where)."""
+    return head is not None and not any(tokens[h] in RIDING for h in range(j, head))
+
+
 def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "a man pushing a bike", "a girl wheeling her e-scooter": a walker with a vehicle in hand, one
-    road user (a walker); any verb in -ing but a verb of riding puts the bike in the walker's hands."""
+    road user (a walker); any verb in -ing but a verb of riding puts the bike in the walker's hands.
+    Only as the verb's object: a preposition of riding between them ("a worker going home on
+    e-scooter", "a student heading to class on bike") puts the walker on it, a rider (:func:`_by_its_object`)."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -737,7 +766,8 @@ def _pushed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
             thing = kind_at(tokens, head) if head is not None else None
             plain = head is not None and not any(known(tokens, h) for h in range(j, head))
             if (
-                person is not None
+                _by_its_object(tokens, j, head)
+                and person is not None
                 and person[0] == "pedestrian"
                 and before + person[1] == len(out)
                 and thing is not None

@@ -272,7 +272,7 @@ def towed(tokens: list[str], kind_at: KindAt) -> list[str]:
 
 #: Verbs of going somewhere: "by" after one of them says how, not who ("I travelled by car", "we came
 #: by van"); after any other participle it names the doer ("hit by car", "overtaken by van").
-_TRAVEL_VERBS = frozenset({"go", "come", "travel", "commute", "arrive", "return", "head", "get", "journey", "leave"})
+TRAVEL_VERBS = frozenset({"go", "come", "travel", "commute", "arrive", "return", "head", "get", "journey", "leave"})
 #: Words that open a noun phrase, after which a vehicle's noun is no modifier of a compound.
 _PHRASE_OPENERS = frozenset({"this", "that", "these", "those", "the", "a", "an", "every", "each", "some", "my", "our"})
 
@@ -283,7 +283,7 @@ def _doer_follows(word: str) -> bool:
     from lemminflect import getAllInflections
 
     for lemma in lemmas(word).get("VERB", ()):
-        if word in getAllInflections(lemma).get("VBN", ()) and lemma not in _TRAVEL_VERBS:
+        if word in getAllInflections(lemma).get("VBN", ()) and lemma not in TRAVEL_VERBS:
             return True
     return False
 
