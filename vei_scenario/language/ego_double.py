@@ -15,13 +15,14 @@ apart by this, and both stay. So does one that the words set apart from the ego:
 story as new ("a car was going at 40": the ego, whose story it is, is never new to it), one someone is
 said to see ("my dad saw the car hit a cyclist"), one said only to stop while no one gets into its path
 ("the bus was stopped at the stop": it may stand there; "a cyclist cut across and the vehicle came to
-a halt" is the ego stopping for the cyclist), one slower or faster than the traffic ("overtook a slow-moving bus"), one
-that does something to another road user, one the ego follows or passes, one named in a group or
-picked out of one, parked, standing or hiding someone. A text that calls the ego "the ego" has said
-which one it is, and no vehicle is taken for it. A third-person report that names no ego at all (no
-narrator in the scene, no "you", no ego phrase) brings the vehicle it is about in as new like any
-other, with the speed it was doing ("a resident driving home at 30 mph was hit when ..."): there, "a"
-does not set apart one with a speed of its own.
+a halt" is the ego stopping for the cyclist, and so is "the van came to a stop when a boy stepped out",
+whose "when" clause tells what happened first though it is said after), one slower or faster than the
+traffic ("overtook a slow-moving bus"), one that does something to another road user, one the ego
+follows or passes, one named in a group or picked out of one, parked, standing or hiding someone. A
+text that calls the ego "the ego" has said which one it is, and no vehicle is taken for it. A
+third-person report that names no ego at all (no narrator in the scene, no "you", no ego phrase) brings
+the vehicle it is about in as new like any other, with the speed it was doing ("a resident driving home
+at 30 mph was hit when ..."): there, "a" does not set apart one with a speed of its own.
 "Both" after someone acted ("a van cut the corner onto my side. Both drivers braked hard") names the
 ego and that one together: two such road users that only go on or brake, nowhere said, are no one new.
 
@@ -39,6 +40,7 @@ from __future__ import annotations
 import re
 from typing import Protocol
 
+from vei_scenario.language.clauses import sentence_stop
 from vei_scenario.language.discourse import FIRST_PERSON, PERCEIVE
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
@@ -96,6 +98,7 @@ class _Said(Protocol):
     from_arm: bool
     beside: bool
     said: set
+    named_end: int
 
 
 def ego_unnamed(tokens: list[str], clauses: list, writer_outside: bool = False) -> bool:
@@ -169,7 +172,34 @@ def stops_for_someone(spec: ActorSpec, specs: list) -> bool:
     return any(b[0] in IN_THE_PATH for s in earlier for b in s.behaviours)
 
 
-def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = ()) -> bool:
+#: Subordinators that open a clause telling when the act of the clause before happened ("stopped when a
+#: boy ran out", "braked as a cyclist cut across"): what that clause tells happened first, or at once.
+WHEN = frozenset(("when", "as"))
+#: At most this many words from the subordinator to the end of its subject's name ("when a young boy").
+_SUBJECT_WORDS = 4
+
+
+def stops_when_someone_comes(a: _Said, others: list, specs: list, tokens: list[str]) -> bool:
+    """Whether road user ``a``, said only to stop, has the time of its stop told by a clause that
+    "when" or "as" opens right after it in its sentence, whose subject is the next road user named
+    and gets into its path ("the van stopped when a boy stepped out on the left", "the vehicle shall
+    stop when a pedestrian steps out"): the stop is for that one, though named after it, as the ego
+    stops in the story told from it. ``others`` are the road users gathered (``a`` among them), in
+    the order of ``specs``; ``tokens`` the scanned words their names end in."""
+    after = [(x.named_end, s) for x, s in zip(others, specs) if x.named_end > a.named_end >= 0]
+    if not after:
+        return False
+    end, nxt = min(after, key=lambda p: p[0])
+    between = tokens[a.named_end : end]
+    at = max((k for k, w in enumerate(between) if w in WHEN), default=None)
+    if at is None or sentence_stop(between, 0) < len(between) or len(between) - at > _SUBJECT_WORDS:
+        return False  # (its subject comes right after the subordinator: "when a boy", "as the cyclist")
+    return any(b[0] in IN_THE_PATH for b in nxt.behaviours)
+
+
+def _double(
+    a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = (), tokens: list[str] = ()
+) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
     doing only what the ego does (only stopping where another of ``specs`` gets into its path), and
@@ -181,7 +211,12 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, spec
         and spec.lateral_m is None
         and (spec.speed_mps is None or spec.speed_mps > 0.0)
         and names <= EGO_LIKE
-        and (names != {"stop"} or (spec.speed_mps is None and not a.stationary and stops_for_someone(spec, specs)))
+        and (
+            names != {"stop"}
+            or spec.speed_mps is None
+            and not a.stationary
+            and (stops_for_someone(spec, specs) or stops_when_someone_comes(a, others, specs, list(tokens)))
+        )
         and not _placed(a)
         and (a.det not in NEW or (unnamed and spec.speed_mps is not None))
         and not a.seen
@@ -189,17 +224,18 @@ def _double(a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, spec
     )
 
 
-def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False) -> list:
+def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False, tokens: list[str] = ()) -> list:
     """Take the one road user of ``reading`` that is the ego said again (see the module) out of its
     road users; ``actors`` are what the reader gathered of them, in the same order. Its speed becomes
     the ego's where the ego has none, and a gap said of it is the gap to the one road user it meets
     (where there is one, with no gap of its own). ``unnamed``: nothing in the text names the ego (no
     narrator, no "you", no vehicle framed as the ego), so one brought in as new may be it too.
+    ``tokens``: the scanned words the road users' names end in (for a stop told with "when").
     Returns ``actors`` without it."""
     specs = reading.actors
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs)]
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs, tokens=tokens)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
-        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs)]
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs, tokens)]
     deeds = [  # (a parked lorry does nothing the ego meets: "a van hit my dad" beside it is no report of the van)
         s
         for a, s in zip(actors, specs)

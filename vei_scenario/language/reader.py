@@ -2974,7 +2974,7 @@ def _read(text: str) -> Reading:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
         writer_only = outside and not ego_double.addressed(text)  # (their "I" names no ego; "you" still does)
         unnamed = ego_double.ego_unnamed(scanned, clauses, writer_only)  # (no narrator at a wheel, no phrase)
-        actors = ego_double.merge_into_ego(actors, r, unnamed)  # ("Bus was doing 45")
+        actors = ego_double.merge_into_ego(actors, r, unnamed, scanned)  # ("Bus was doing 45")
         actors = ego_turner.merge_turner_into_ego(actors, r, unnamed)  # ("the test car turns right; a rider ...")
         actors = ego_turner.merge_overtaken_into_ego(actors, r, scanned)  # ("a cyclist overtaking the bus")
         phrase = ego_double.ego_phrase(clauses)  # ("the VUT": one brought in as new is someone else)
