@@ -845,6 +845,10 @@ def _place_adversary(
         stated = distance_m is not None and cfg.get("gap_m") != distance_m  # (not its gap where it gets back in)
         lon = distance_m if stated else mod.place_oncoming(ego_speed, out_speed, lengths, cfg)
         spawn["longitudinal_m"] = round(lon, 3)
+    elif behaviour_name == "overtake":  # (from behind or the next lane: its start speed sets how far back)
+        lon, placed_speed = mod.place(ego_speed, lengths, cfg, speed)
+        spawn["longitudinal_m"] = round(lon, 3)
+        out_speed = placed_speed if speed is None else speed
     elif hasattr(mod, "place"):
         lon, placed_speed = mod.place(ego_speed, lengths, cfg)
         if relation == "behind" and lon > 0:

@@ -4,7 +4,9 @@ The actor drives ahead of the ego in the neighbouring lane (left of it for a rig
 before the junction it cuts across the ego's lane over ``lane_change_s`` while slowing to
 ``turn_speed_mps``, and turns at the junction (a route through the exit on that side). One that comes
 up on another arm of the junction (the one opposite) has no lane of the ego's to cut into: its turn
-towards that exit is what crosses the ego's lane.
+towards that exit is what crosses the ego's lane. Where the map has no exit on that side (a bend or
+a straight road: the turn is into a car park or a drive the map does not hold), the cut across the
+ego's lane while slowing for the turn is all of it the map can play, and it is what the ego meets.
 """
 
 from __future__ import annotations
@@ -42,13 +44,15 @@ PROFILES = {
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     turn = str(cfg.get("turn", "right"))
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
-    actions = [route_action(ctx, turn), speed_action(value(cfg, PARAMETERS, "turn_speed_mps"), rate=rate)]
+    actions = [speed_action(value(cfg, PARAMETERS, "turn_speed_mps"), rate=rate)]
+    if turn in ctx.exits:  # (a map with no exit on that side: only the cut across, see above)
+        actions.insert(0, route_action(ctx, turn))
     if ctx.on_another_arm():
         # coming up to the junction on another arm, its turn itself crosses the ego's lane: it takes its
         # route and slows for the turn from the start (the gap to the ego, measured along its heading,
         # closes only once they have passed each other, after it would have driven through)
         return [Step("forced_turn", actions)]
-    actions.insert(1, lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")))
+    actions.insert(len(actions) - 1, lane_change_to_ego(ctx.ego, value(cfg, PARAMETERS, "lane_change_s")))
     return [Step("forced_turn", actions, conditions=[Condition("ego_within", value(cfg, PARAMETERS, "gap_m"))])]
 
 
