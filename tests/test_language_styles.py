@@ -283,7 +283,8 @@ def test_a_road_user_entering_a_roundabout_without_yielding_plays_a_run_into_the
     from vei_scenario.language.rules_backend import layers_from_text
 
     text = "On the roundabout a moped comes in from the right without giving way."
-    assert _actors(text) == [("car", "junction_right", ["run_red_light"])]
+    # (going onto the ring with no light said: a turn into the ego's way round, see ring_entry)
+    assert _actors(text) == [("car", "junction_right", ["turn_into"])]
     for seed in (0, 1):
         assert play_case({"text": text}, layers_from_text, tmp_path, seed) == [], seed
 

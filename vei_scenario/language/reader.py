@@ -65,6 +65,7 @@ from vei_scenario.language import (
     protagonist,
     pull_in_apart,
     report_vehicle,
+    ring_entry,
     run_on,
     said_again,
     scene_pace,
@@ -321,6 +322,7 @@ class _Actor:
     has_way: bool = False  # going on while the ego gives way ("we yield; the van carries on")
     priority: bool = False  # already on the roundabout or the main road: going on is its right
     from_arm: bool = False  # said to come from or out of a junction arm ("from the side road on the left")
+    takes_an_exit: bool = False  # an exit said as the arm it takes ("takes the exit on the left"): it leaves
     beside: bool = False  # said to be on a side of the ego ("a cyclist on my left"), not to come from one
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
     pulled_out: bool = False  # its move is a pull-out of a side road ("came out of", "emerged from")
@@ -2757,6 +2759,7 @@ def _read(text: str) -> Reading:
         ):
             side = a.kerb_side or a.side
             a.behaviours = kerb_ride.along_then_out(a.behaviours, a.across, side) or a.behaviours
+        told = [b[0] for b in a.behaviours]  # (its acts as said, before they are specialised below)
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and a.goes_on:  # a walker who does not give way or wait: crosses
             behaviours = [
@@ -2913,6 +2916,15 @@ def _read(text: str) -> Reading:
         spec.behaviours = junctions.through_from_opposite(
             spec.relation, spec.behaviours, said, passes_another, going_on
         )
+        spec.behaviours = ring_entry.joins_the_ring(
+            r.map_kind,
+            signal,
+            spec.relation,
+            told,
+            a.takes_an_exit,
+            spec.behaviours,
+            said,
+        )  # ("came onto the roundabout from the left without giving way": onto the ring, in front of the ego)
         if along_first and len(spec.behaviours) > 1 and spec.behaviours[0][0] == "along_road":
             kerb_ride.at_the_edge(spec, a.kerb_side or a.side or a.lane_side)
         if only_there and _waits_at_a_crossing(a, spec, said):
@@ -3519,6 +3531,10 @@ def _gets_up(m) -> bool:
     """Whether return ``m`` is getting back up or on ("fell off and got back up", "got back on his
     bike"): standing up or remounting, not going back to its side of the road."""
     return m.words.split()[0] in ("get", "got", "gets", "getting") and m.next_ in ("up", "on")
+
+
+#: Prepositions that say an arm is where a road user comes out of ("from the exit", "off the slip").
+_OUT_OF_AN_ARM = frozenset(("from", "out", "off"))
 
 
 def _from(m) -> bool:
@@ -4200,6 +4216,7 @@ def _apply(m, who, r, link, added) -> None:
         ):
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
             a.from_arm = a.from_arm or m.prev in ("from", "out")  # (not "over the mouth of the side road")
+            a.takes_an_exit = a.takes_an_exit or ("exit" in m.words.split() and m.prev not in _OUT_OF_AN_ARM)
         elif m.slot == "stationary":
             a.stationary = True
             a.parked = a.parked or m.words.split()[0] in ("parked", "park", "double-parked", "double")
