@@ -56,11 +56,13 @@ def test_a_pass_of_the_ego_from_behind_is_an_overtake(text):
     assert _acts(text) == [("car", ["overtake"])]
 
 
-@pytest.mark.xfail(strict=True, reason="an overtake and the cut-in after it are read as one overtake")
 @pytest.mark.parametrize(
     "text",
     [
-        "A van overtook me and pulled in.",
+        pytest.param(
+            "A van overtook me and pulled in.",
+            marks=pytest.mark.xfail(strict=True, reason="a pull-in said nowhere near the ego is the overtake's end"),
+        ),
         "A taxi pulled out, went past me and then cut in right in front of my bumper.",
     ],
 )

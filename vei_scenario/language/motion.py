@@ -45,6 +45,7 @@ import re
 from dataclasses import replace
 
 from vei_scenario.language.clauses import SENTENCE_END
+from vei_scenario.language.cut_back_in import sudden_returns_at_the_ego
 from vei_scenario.language.discourse import VULNERABLE
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
@@ -1598,7 +1599,7 @@ def chains(clauses: list, tokens: list[str]) -> list:
     at it (:func:`coming_in_the_ego_lane`); a swerve round the ego as going on past it
     (:func:`round_the_ego`)."""
     clauses = right_at_the_ego(overtakes_on_the_wrong_side(the_wrong_side_of(clauses)), tokens)
-    clauses = in_in_front_of_the_ego(clauses, tokens)
+    clauses = sudden_returns_at_the_ego(in_in_front_of_the_ego(clauses, tokens), tokens)
     clauses = hard_stops(weather_not_behaviour(room_to_act_not_behaviour(clauses, tokens)), tokens)
     clauses = coming_from_in_front(moving_out_to_pass(a_left_or_a_right(clauses, tokens), tokens), tokens)
     clauses = across_to_turn(turning_to_a_side(clauses, tokens))
@@ -2513,11 +2514,15 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     across the front of my car") or close by its front ("passes inches from her bumper") read as
     crossing the ego's path: an overtake takes the one it passes as its object ("passed us"); passing
     in front of it, a road user goes across where the ego is heading. How near it came may stand
-    between ("passed approx 2 m in front of us")."""
+    between ("passed approx 2 m in front of us"). A verb + "past" has the ego's front as the
+    particle's object ("went right past our bonnet"): it went by across the front, not along a side."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
+            if passes(m) and m.words.split()[-1] == "past" and _close_by_the_egos_front(tokens, m.end - 1):
+                kept[k] = replace(m, value=("cross_in_front", {}))  # ("went right past our bonnet")
+                continue
             if not passes(m) or len(m.words.split()) != 1:
                 continue
             j = m.end

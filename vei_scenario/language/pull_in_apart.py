@@ -13,11 +13,16 @@ or a verb of a sudden move sideways ("dived in", "swerved in", "cut in"); a wide
 room", "by a good 50 metres") or none said leaves the ordinary end of an overtake ("It pulled in ahead
 of me").
 
-Guards: in the same sentence (up to ". ! ?": a ";" or ":" joins two clauses of one sentence) the
-pull-in stays the overtake's end; a pull-in whose place phrase names someone else ("behind a lorry well
-ahead of me", "in front of the car ahead of me"), the ego from behind ("just behind me"), or no ego at
-all ("the van pulled back in": an oncoming overtaker back to its own side) stays folded. A return said
-with "back" ("cut back in") the reader holds as a return, not a cut-in: it stays the overtake's.
+In the same sentence (up to ". ! ?": a ";" or ":" joins two clauses of one sentence) a pull-in said
+to end close in front of the ego is a cut-in too ("came past on my right and cut in right in front of
+me"): the writer names the place the overtaker took, the ego's lane close ahead, not only that it got
+back. A plain return there is the overtake's end: "back" with a verb that only says it went ("came
+back in just in front of me", "pulled back in") tells the overtaker regaining its lane; "back" with a
+verb of a sudden move sideways ("cut back in right in front of me") is a cut-in.
+
+Guards: a pull-in whose place phrase names someone else ("behind a lorry well ahead of me", "in front of
+the car ahead of me"), the ego from behind ("just behind me"), or no ego at all ("the van pulled back
+in": an oncoming overtaker back to its own side) stays folded.
 """
 
 from __future__ import annotations
@@ -31,6 +36,8 @@ from vei_scenario.language.manner import BREAKS, DANGEROUS, EXACTLY, METRES, MOD
 SENTENCE = "_sentence_start"
 #: The mark a cut-in carries when its place phrase ends close at the ego (in its clause).
 AT_EGO = "_at_the_ego"
+#: The mark a cut-in carries when it is said as a plain return ("came back in"): see the module's docstring.
+PLAIN_RETURN = "_plain_return"
 #: What ends a sentence: a ";" or ":" joins two clauses of one.
 _SENTENCE_ENDS = frozenset(".!?")
 #: Words that name the ego after a verb: the narrator's object and possessive forms, or the ego itself.
@@ -80,11 +87,11 @@ def _close(tokens: list[str], start: int, place: int, stop: int) -> bool:
     in its clause (up to ``stop``; see the module's docstring)."""
     clause = tokens[sentence_start(tokens, start, _SENTENCE_ENDS) : stop]
     measured = [
-        v for k in range(start + 1, place) if tokens[k + 1 : k + 2] != [] and tokens[k + 1] in METRES
+        v for k in range(start + 1, stop) if tokens[k + 1 : k + 2] != [] and tokens[k + 1] in METRES
         if (v := _metres(tokens[k])) is not None
     ]  # fmt: skip
-    if measured:
-        return min(measured) <= SMALL_SPARE_M  # ("cuts in 5 m ahead of the ego"; not "40 m ahead")
+    if measured:  # (before or after the place: "cuts in 5 m ahead of the ego", "into our lane 4 m ahead")
+        return min(measured) <= SMALL_SPARE_M  # (not "40 m ahead")
     manner = stated_manner(clause)
     if manner is not None:
         return manner in (DANGEROUS, MODERATE)  # ("just in front of me"; not "with plenty of room")
@@ -92,10 +99,10 @@ def _close(tokens: list[str], start: int, place: int, stop: int) -> bool:
     if any(w in _IN_FRONT | _ONTO and said[k - 1 : k] != [] and said[k - 1] in EXACTLY for k, w in enumerate(said)):
         return True  # ("right on my nose")
     measure = any(_metres(w) is not None for w in tokens[place:stop])  # ("by a good 50 metres")
-    return not measure and bool(_SUDDEN & set(lemmas(tokens[start]).get("VERB", ())))
+    return not measure and sudden(tokens[start])
 
 
-def _ends_close_at_the_ego(tokens: list[str], start: int) -> bool:
+def ends_close_at_the_ego(tokens: list[str], start: int) -> bool:
     """Whether the pull-in whose verb is at ``tokens[start]`` ends close in front of the ego, in its clause."""
     stop = start + 1
     while stop < min(len(tokens), start + _WHERE_IT_ENDS) and tokens[stop] not in BREAKS:
@@ -111,16 +118,30 @@ def mark(name: str, cfg: dict, tokens: list[str], start: int, end: int) -> None:
         return
     cfg[SENTENCE] = sentence_start(tokens, start, _SENTENCE_ENDS)
     if name == "cut_in":
-        cfg[AT_EGO] = _ends_close_at_the_ego(tokens, start)
+        cfg[AT_EGO] = ends_close_at_the_ego(tokens, start)
+        cfg[PLAIN_RETURN] = _plain_return(tokens, start)
+
+
+def sudden(word: str) -> bool:
+    """Whether ``word`` is a verb of a sudden move sideways ("cut", "dived", "swerves")."""
+    return bool(_SUDDEN & set(lemmas(word).get("VERB", ())))
+
+
+def _plain_return(tokens: list[str], start: int) -> bool:
+    """Whether the pull-in whose verb is at ``tokens[start]`` is said as a return with a verb that only
+    says it went ("came back in", "pulled back in"), not as a sudden move ("cut back in")."""
+    return tokens[start + 1 : start + 2] == ["back"] and not sudden(tokens[start])
 
 
 def told_apart(overtake_cfg: dict, cut_in_cfg: dict) -> bool:
-    """Whether a cut-in said right after an overtake is a move of its own: told in a later sentence,
-    ending close in front of the ego (see the module's docstring)."""
+    """Whether a cut-in said right after an overtake is a move of its own: ending close in front of the
+    ego, told in a later sentence, or in the same one unless as a plain return (see the module's docstring)."""
     first, then = overtake_cfg.get(SENTENCE), cut_in_cfg.get(SENTENCE)
-    return first is not None and then is not None and then > first and bool(cut_in_cfg.get(AT_EGO))
+    if first is None or then is None or then < first or not cut_in_cfg.get(AT_EGO):
+        return False
+    return then > first or not cut_in_cfg.get(PLAIN_RETURN)
 
 
 def unmarked(cfg: dict) -> dict:
     """``cfg`` without the marks of this module."""
-    return {k: v for k, v in cfg.items() if k not in (SENTENCE, AT_EGO)}
+    return {k: v for k, v in cfg.items() if k not in (SENTENCE, AT_EGO, PLAIN_RETURN)}
