@@ -12,11 +12,16 @@
 
 from __future__ import annotations
 
-from vei_scenario.language.discourse import ARTICLES, DETERMINERS
 from vei_scenario.language.lemmas import lemmas
 
 #: Nouns of a knock too light for a crash: contact only when felt or heard.
 _LIGHT_KNOCKS = frozenset(("tap", "knock", "clunk", "clonk", "nudge"))
+#: The articles and the determiners that open a noun phrase. (Said here: the reader's lists live in
+#: modules that import the outcome reader, which imports this.)
+_ARTICLES = frozenset(("a", "an", "the"))
+_DETERMINERS = _ARTICLES | frozenset(
+    ("some", "another", "one", "this", "that", "these", "those", "my", "our", "his", "her", "their", "its", "your")
+)
 #: Verbs (lemmas) of perceiving a knock by touch or ear.
 _PERCEIVING = frozenset(("feel", "hear"))
 #: The heads of noun phrases that name a marking painted on the road.
@@ -43,7 +48,7 @@ def knock_felt(words: list[str], i: int) -> bool:
     if words[i] not in _LIGHT_KNOCKS:
         return False
     k = i - 1
-    while k >= 0 and words[k] not in ARTICLES:
+    while k >= 0 and words[k] not in _ARTICLES:
         if "ADJ" not in lemmas(words[k]) or "VERB" in lemmas(words[k]):
             return False  # (only adjectives between: "a small knock", "the tap")
         k -= 1
@@ -59,7 +64,7 @@ def _object_head(words: list[str], i: int) -> str | None:
     phrase before a preposition, a conjunction or the clause's end ("the white line", "the centre line
     with its trailer")."""
     after = words[i + 1 : i + 7]
-    if not after or after[0] not in DETERMINERS:
+    if not after or after[0] not in _DETERMINERS:
         return None
     head = None
     for w in after[1:]:
