@@ -35,6 +35,7 @@ from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.light_contact import knock_felt, marking_met
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
 from vei_scenario.language.settings import FOOT_CROSSINGS
@@ -96,7 +97,8 @@ _PLACES = frozenset(
     ("lane", "lanes", "road", "street", "path", "way", "junction", "intersection", "roundabout", "carriageway", "gap",
      "space", "traffic", "crossing", "exit", "entry", "lay-by", "bay", "stop", "drive", "driveway", "verge", "shoulder",
      "kerb", "curb", "pavement", "footway", "sidewalk", "footpath", "bend", "corner", "view", "position", "line",
-     "arm", "spot", "skid", "spin", "park", "lot", "entrance", "carpark", "turn", "area", "zone", "middle", "centre")
+     "arm", "spot", "skid", "spin", "park", "lot", "entrance", "carpark", "turn", "area", "zone", "middle", "centre",
+     "place")
 )  # fmt: skip
 #: Words that end an object's noun phrase ("into the pallets lying in the lane": "the pallets").
 _PHRASE_ENDS = frozenset(("of", "at", "on", "in", "from", "behind", "and", "with", "to", "without", "lying", "which",
@@ -506,7 +508,7 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         return names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
     if w == _INTO and all(x in _ONSET for x in words[:i]) and _into_road_user(words, i):
         return True  # (a clause of its own: ", straight into my door", "Right into the back of the van.")
-    if w == "under" and (i == 0 or _is_verb(prev) or all(x in _ONSET for x in words[:i])):
+    if w == "under" and (i == 0 or _verb_before_path(words, i) or all(x in _ONSET for x in words[:i])):
         obj = words[i + 1 : i + 6]
         if obj[:1] and (obj[0] in _POSSESSIVES or obj[0] in ("the", "a")) and _under_road_user(obj[1:]):
             return True  # ("went under the nearside front", "and under the wheels of the lorry")
@@ -521,6 +523,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         and (prev in ("a", "an", "the") or words[i - 2 : i - 1] == ["a"])
     ):
         return True
+    if knock_felt(words, i):
+        return True  # ("felt the tap", "heard a soft clunk from the bumper")
     lem = _lemmas(w)
     if "wipe" in lem and "out" in words[i + 1 : i + 4]:
         k = words.index("out", i + 1)  # ("wiped out the cyclist", "wiped him out"; "wiped out on the ice": fell)
@@ -566,6 +570,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
             return False  # ("the booking website crashed", "my phone app crashed twice")
         if _own_one(words, i):
             return False  # ("you braked late, I had to touch mine": the ego's own pedal, no one met)
+        if marking_met(words, i):
+            return False  # ("its wheel touched the white line": paint on the road, no one met)
         obj = words[i + 1 : i + 7] + [""] * (len(words) <= i + 7)  # (its clause's end closes the phrase)
         if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:], named):
             return False  # ("knocked the sirens off", "is this going to hit my rating")
@@ -670,6 +676,17 @@ _ONSET = frozenset(("straight", "right", "smack", "slap", "bang", "slam", "head-
 #: Verbs of a body carried over a surface: across a vehicle's part with one of these is a contact.
 _SLIDING = frozenset(("slide", "roll", "bounce", "fly", "tumble", "skid", "sprawl", "throw", "fling", "scrape"))
 _DETERMINERS = frozenset(("the", "a", "an", "this", "that", "some"))
+
+
+def _verb_before_path(words: list[str], i: int) -> bool:
+    """Whether a verb heads the path that the preposition at ``i`` opens, right before it or past the
+    adverbs of degree that lead a path ("went under", "went right under the lorry", "slid straight
+    under"). "right" after a noun is the degree of a place, no verb ("out onto the roundabout right
+    under the bonnet": where it came, in front of the ego, not under it)."""
+    k = i - 1
+    while k > 0 and words[k] in _ONSET and words[k] != "and":
+        k -= 1
+    return k >= 0 and _is_verb(words[k]) and (k == i - 1 or words[k] not in _ONSET)
 
 
 def _under_road_user(obj: list[str]) -> bool:
@@ -792,9 +809,11 @@ def into_road_user(words: list[str], j: int) -> bool:
     return _into_road_user(words, j)
 
 
-#: The parts of a vehicle that no road or place has ("door", "bumper"; not "side", "back", "front"
-#: or "boot", which a road, a queue or a load has too): met, whoever's they are.
-_FITTED_PARTS = frozenset(("door", "bumper", "wing", "bonnet", "windscreen", "windshield", "tailgate", "fender"))
+#: The parts of a vehicle that no road or place has ("door", "bumper", a lorry's "trailer"; not "side",
+#: "back", "front" or "boot", which a road, a queue or a load has too): met, whoever's they are.
+_FITTED_PARTS = frozenset(
+    ("door", "bumper", "wing", "bonnet", "windscreen", "windshield", "tailgate", "fender", "trailer")
+)
 
 
 def _into_road_user(words: list[str], j: int) -> bool:
@@ -812,7 +831,7 @@ def _into_road_user(words: list[str], j: int) -> bool:
         if w in _PHRASE_ENDS:
             break
         chunk.append(w)
-    if not chunk or set(chunk) & _PLACES:
+    if not chunk or (set(chunk) & _PLACES and not _owned_part(chunk, words[j + 1 + len(chunk) :])):
         return False  # ("into the right lane", "into our path")
     if _no_thing_met(chunk):
         return False  # ("into the crosswalk", "gone into the dark", "tucked into the sun visor")
@@ -822,6 +841,22 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
     nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
     return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
+
+
+def _owned_part(chunk: list[str], rest: list[str]) -> bool:
+    """Whether the noun phrase ``chunk`` after "into" ends in a word that names a vehicle's part as well
+    as a place ("corner") and a road user owns it: a possessive opens it ("into my rear corner") or an
+    "of" after it names one by its head ("into the front left corner of the car"; not "the corner of
+    the car park", whose head is a place)."""
+    if chunk[-1] not in _VEHICLE_PARTS or set(chunk[:-1]) & _PLACES:
+        return False
+    if chunk[0] in _POSSESSIVES:
+        return True
+    if rest[:1] != ["of"]:
+        return False
+    owner = [w for w in rest[1:5] if w not in _DETERMINERS and w not in _POSSESSIVES]
+    head = next((k for k, w in enumerate(owner) if w in _PHRASE_ENDS or w in _BREAK_WORDS), len(owner))
+    return head > 0 and (_road_user_word(owner[head - 1]) or owner[head - 1] in _EGO_HEADS)
 
 
 #: The places of a road and beside it one rides or walks into, over the ones of :data:`_PLACES`
@@ -939,6 +974,8 @@ def names_road_user(obj: list[str]) -> bool:
 def _vehicle_part(after: list[str]) -> bool:
     """Whether ``after`` (a verb's object) is a vehicle's part: a determiner or possessive, then up to
     three modifiers, then the part ("my front bumper", "the wing mirror of the taxi")."""
+    if after[1:2] == ["'s"]:
+        after = ["the", *after[2:]]  # ("ego 's side mirror": a possessor's noun and "'s" are its determiner)
     if not after or not (after[0] in _POSSESSIVES or after[0] in ("the", "a", "his", "her")):
         return False
     reach = 6 if "'s" in after[1:4] else 4  # ("my driver's side mirror": its owner's noun between)
@@ -1408,6 +1445,22 @@ _LEAVING = frozenset(("leaving", "leave", "left", "gave", "give", "giving", "giv
 _WIDE_KINDS = ("car", "van", "truck")
 #: Words that make the width that follows less than said ("less than a car's width", "not even").
 _SHORT_OF = frozenset(("less", "under", "not", "never", "barely", "hardly", "scarcely", "only", "half", "no"))
+
+
+#: Words a margin told alone may carry before its unit ("Literally inches.", "Just a whisker.").
+_MARGIN_FILLERS = HEDGES | _INTENSIFIERS | frozenset(("literally", "mere", "a", "by", "bare"))
+
+
+def _margin_alone(words: list[str]) -> bool:
+    """Whether a sentence is only a small margin, a unit of a hair's breadth with no number ("Inches.",
+    "Literally centimetres!", "By a whisker."): the distance the last thing told passed by, a near
+    miss, as "Just." is a hedge of it. A number makes it a measure ("30 cm."), not a verdict."""
+    return (
+        len(words) <= 4
+        and words[-1] in _SMALL_UNITS
+        and words[-1] not in ("foot", "inch", "cm", "mm")
+        and all(w in _MARGIN_FILLERS for w in words[:-1])
+    )
 
 
 @lru_cache(maxsize=1)
@@ -2151,6 +2204,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     before = sentence[: len(sentence) - len(words) + i]
     passive = _denied_after(words, i)  # ("collision narrowly avoided", "a crash was averted")
     hedged = _scoped(words, i, HEDGES | {"within"}, 5) or passive == "hedged" or _near_to(words, i)
+    hedged = hedged or _near_as_nearly(words, i)
     hedged = hedged or _only_just(words, i) or _near_enough(words, i)
     hedged = hedged or _believed(words, i) or _in_question(words, i)
     hedged = hedged or (_contact_noun(words[i]) and only_thought_of(words, i))  # ("a crash is unthinkable")
@@ -2159,10 +2213,38 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     )
     if hedged or counterfactual:
         return "hedged"
+    if _wondered_at(words, i):
+        return "hedged"  # ("how nobody got hit I'll never know": it came that close)
     if _denied_before(words, i) or _scoped(words, i, _HYPOTHETICAL, 2) or passive == "denied":
         # ("must overtake him and not touch him": the outcome the test wants, no contact)
         return "required" if _required(before) else "denied"
     return "contact"
+
+
+#: Verbs (lemmas) of knowing or understanding how something came about.
+_KNOWING = frozenset(("know", "understand", "explain", "tell"))
+
+
+def _wondered_at(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i``, denied in a "how" clause, is the object of a denied verb of
+    knowing ("how nobody got hit I'll never know", "I don't know how he didn't hit me", "no idea how we
+    didn't collide"): the writer wonders that it did not happen, which says it came very close. (The
+    wh-clause ends the negation's scope: :func:`_denied_before` reads its own denial alone.)"""
+    how = next((k for k in range(i - 1, -1, -1) if words[k] == "how"), None)
+    if how is None or not _denied_before(words, i):
+        return False  # ("I don't know how he hit me": the contact itself is told)
+    knowing = [k for k, w in enumerate(words) if _lemmas(w) & _KNOWING and _is_verb(w)]
+    denied = any(set(words[max(0, k - 3) : k]) & _NEGATORS for k in knowing)
+    return denied or words[max(0, how - 2) : how] == ["no", "idea"]
+
+
+def _near_as_nearly(words: list[str], i: int) -> bool:
+    """Whether "near" stands right before the verb of contact at ``i`` ("near wiped out a biker", "he
+    near hit me"): the adverb "nearly" in its older and dialect form, a hedge. After a determiner it is
+    the adjective of a noun ("a near hit", "a near collision"), read as a near miss elsewhere."""
+    if i == 0 or words[i - 1] != "near" or not _is_verb(words[i]) or words[i].endswith(("s", "ing")):
+        return False
+    return i < 2 or words[i - 2] not in _DETERMINERS  # (not "a near hit": the noun)
 
 
 def _contact_noun(w: str) -> bool:
@@ -2478,14 +2560,18 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 and words[i + 1 : i + 2]
                 and words[i + 1] in _SQUEEZE_BY
                 and not forgone(words, i)
+                and not _denied_before(words, i)  # ("he was not going to squeeze by": no such pass)
             ):
                 add("close")  # ("squeezed past", "squeezed through between us": a pass with no room)
                 continue
             if len(words) == 1 and w in HEDGES | {"just"} and ends_sentence and n > 0:
                 add("hedged")  # ("Made it. Just.", "He got through. Barely.": a hedge of what was just told)
                 continue
-            if len(words) == 1 and w in _IMPACT_SOUNDS and clause.first_of_sentence and ends_sentence:
-                add("contact")  # ("CRUNCH.", "Thud.": the impact told by its sound, a sentence of its own)
+            if i == len(words) - 1 and clause.first_of_sentence and ends_sentence and _margin_alone(words):
+                add("near")  # ("Inches.", "Literally centimetres!": a margin told as a sentence of its own)
+                continue
+            if len(words) == 1 and w in _IMPACT_SOUNDS and ends_sentence:
+                add("contact")  # ("CRUNCH.", "too late - crunch.": the impact told by its sound, a clause of its own)
                 continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe" if w == "clear" else "unharmed")  # ("All clear."; "all fine": how it left them)
