@@ -1635,6 +1635,7 @@ NOISE = (
     "for no reason",
     "picture this",
     "the whole way",
+    "right of way",  # (a priority one has or is given, the noun "right": no right-hand side)
     "right in",
     "right ahead",
     "right behind",
