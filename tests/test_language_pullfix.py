@@ -92,17 +92,18 @@ def test_a_hard_brake_after_a_cut_in_told_apart_keeps_its_criticality() -> None:
     assert parts[-1]["config"]["criticality"] == "dangerous"
 
 
-# --- C9: a sentence ends at ". ! ?"; after ";" or ":" the pull-in is in the overtake's sentence -----------
+# --- C9: a close pull-in is a cut-in whether ". ; :" or ", then" ends the overtake's clause ---------------
 @pytest.mark.parametrize(
     "text",
     [
+        "A car overtook me. It then cut in just in front of me.",
         "A car overtook me; it then cut in just in front of me.",
         "A car overtook me: it cut in right in front of my bonnet.",
         "A car overtook me, then it cut in just in front of me.",
     ],
 )
-def test_a_pull_in_after_a_semicolon_or_colon_is_the_overtakes_end(text: str) -> None:
-    assert _overtaker(text) == [["overtake"]]
+def test_a_close_pull_in_reads_the_same_after_any_clause_end(text: str) -> None:
+    assert _overtaker(text) == [["overtake", "cut_in"]]
 
 
 # --- F19: "As a <vehicle> driver <phrase> cut(s) ... I ...": "as" is "while" --------------------------------
