@@ -44,6 +44,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from vei_scenario.language.function_words import (  # noqa: F401  (re-exported: the reader names them here)
+    ARTICLES,
+    BE,
+    DEFINITE,
+    DETERMINERS,
+    FIRST_PERSON,
+    INDEFINITE,
+    POSSESSIVE,
+)
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED, WRONG_WAY_NOUNS
 from vei_scenario.language.scenery import absent, vehicle_modifiers
@@ -64,14 +73,6 @@ KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 #: ``known(tokens, i)``: whether the reader has any phrase starting at ``i``.
 Known = Callable[[list[str], int], bool]
 
-#: The articles, one another's forms in a phrase.
-ARTICLES = frozenset({"a", "an", "the"})
-INDEFINITE = frozenset({"a", "an", "some", "another", "one", "this"})  # ("this guy on a bike": new)
-DEFINITE = frozenset({"the", "that", "these", "those"})
-POSSESSIVE = frozenset({"my", "our", "his", "her", "their", "its", "your"})
-DETERMINERS = INDEFINITE | DEFINITE | POSSESSIVE
-FIRST_PERSON = frozenset({"i", "we", "me", "us", "my", "our"})
-BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})
 PUNCT = frozenset({".", ";", "!", "?", ":", ","})
 SENTENCE_END = frozenset({".", ";", "!", "?", ":"})
 #: Prepositions that join a person to the vehicle it rides ("a lad on a scooter", "a kid astride a bike").

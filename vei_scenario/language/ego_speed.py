@@ -20,8 +20,8 @@ from __future__ import annotations
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import sentence_start, sentence_stop
-from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.ego import SENTENCE_END
+from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.quantities import is_number
 
@@ -253,7 +253,7 @@ def _no_subject_before(tokens: list[str], start: int, i: int, road_users: set[in
     on the roundabout", "On the M6", "Just past the school,"), no road user, pronoun nor verb of a subject."""
     for j in range(start, i):
         w = tokens[j]
-        if j in road_users or w in _FINITE or w in _SUBJECT_PRONOUNS or _past_verb(w):
+        if j in road_users or w in _FINITE or w in SUBJECT_PRONOUNS or _past_verb(w):
             return False
         if j == start and w in _OPENING_SUBJECTS:
             return False  # ("It was at 40 when ...": its subject; "over it at 50" is an object)
@@ -262,8 +262,6 @@ def _no_subject_before(tokens: list[str], start: int, i: int, road_users: set[in
     return True
 
 
-#: Pronouns that are a sentence's subject: one said before its speed makes the speed theirs.
-_SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
 #: Words that are a sentence's subject where they open it ("It was at 40 ...", "There was a bus at 30").
 _OPENING_SUBJECTS = frozenset({"it", "there", "this", "that", "one"})
 

@@ -10,14 +10,12 @@ morning stop"): a determiner there opens a time, not a new subject, and the verb
 from __future__ import annotations
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language.function_words import ARTICLES, DEFINITE, POSSESSIVE, SUBJECT_PRONOUNS
 
 #: The forms of "do" that carry a negation.
 _DO = frozenset(("do", "does", "did"))
 #: Words that open a noun phrase or are a subject: no verb follows "not" when one of these does.
-_PHRASE_OPENERS = frozenset(
-    ("the", "a", "an", "my", "our", "his", "her", "their", "its", "your", "this", "that", "these", "those",
-     "i", "we", "he", "she", "they", "you", "ego")
-)  # fmt: skip
+_PHRASE_OPENERS = ARTICLES | DEFINITE | POSSESSIVE | SUBJECT_PRONOUNS | {"this", "ego"}
 #: The nouns of a time a determiner opens between "not" and its verb ("this time", "that morning",
 #: "the first time"): the lexicon's one-word times of day, and the plain units of an occasion.
 _TIME_HEADS = frozenset(

@@ -34,6 +34,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.elided_verb import elliptical_negation
+from vei_scenario.language.function_words import SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.light_contact import knock_felt, marking_met
 from vei_scenario.language.normalise import lies_on_roads
@@ -2711,8 +2712,6 @@ _SIGNALLING = frozenset(("wave", "flash", "beckon", "signal", "motion", "gesture
 _ONWARD = frozenset(("through", "across", "on", "out", "past", "by", "ahead", "over", "forward", "round", "around"))
 #: Verbs (lemmas) of another's going by or across, after a conjunction of time ("while Mrs Reid crossed").
 _GOING_BY = frozenset(("cross", "pass", "go", "walk", "ride", "cycle", "come", "get", "squeeze", "overtake", "clear"))
-#: Subject pronouns that open the other's move in a clause of time ("while she crossed").
-_SUBJECT_PRONOUNS = frozenset(("he", "she", "they", "you", "we", "i"))
 
 
 def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
@@ -2740,7 +2739,7 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
         return names_road_user(obj[:3])  # ("waited for him"; not "waited for a gap")
     if nxt in _WHILE and obj:
         moved = any(_is_verb(x) and _lemmas(x) & _GOING_BY for x in obj[1:4])  # ("while Mrs Reid crossed")
-        return obj[0] in _SUBJECT_PRONOUNS or names_road_user(obj[:3]) or moved  # ("while she crossed")
+        return obj[0] in SUBJECT_PRONOUNS or names_road_user(obj[:3]) or moved  # ("while she crossed")
     return False
 
 

@@ -11,6 +11,7 @@ an adjective said of another noun ("left him with an inconceivable injury") leav
 
 from __future__ import annotations
 
+from vei_scenario.language.function_words import SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs (lemmas) of thinking of something.
@@ -23,9 +24,6 @@ _DENIALS = frozenset(("not", "never", "cannot", "no"))
 _BEAR = frozenset(("bear", "bears"))
 #: The copulas an adjective of the unthinkable is said after ("is unthinkable", "would have been").
 _COPULAS = frozenset(("is", "was", "are", "were", "be", "been", "seems", "seemed"))
-#: Subjects of another's thought of the contact ("something I cannot bear to think about"). (Said here:
-#: the reader's pronoun lists live in modules that import the outcome reader, which imports this.)
-_OTHER_SUBJECTS = frozenset(("i", "we", "he", "she", "they", "you"))
 
 
 def _thinking(word: str) -> bool:
@@ -39,7 +37,7 @@ def only_thought_of(words: list[str], i: int) -> bool:
     other subject between (a pronoun: someone else's thought of it)."""
     after = words[i + 1 :]
     for k, w in enumerate(after):
-        if w in _OTHER_SUBJECTS:
+        if w in SUBJECT_PRONOUNS:
             return False  # ("... is something I cannot bear to think about": another thinks of it)
         if w in _UNTHINKABLE:
             j = k - 1

@@ -1,0 +1,21 @@
+"""The closed classes of English the reader's modules share: articles and other determiners, the
+subject pronouns and the forms of "be".
+
+They sit in a module of their own, below every reading rule, so that any rule can name them without
+importing a reader that may in turn import it: a rule of the outcome reader needs a subject pronoun as
+much as the discourse reader does, and the outcome reader is imported by modules the discourse reader
+imports.
+"""
+
+from __future__ import annotations
+
+#: The articles, one another's forms in a phrase.
+ARTICLES = frozenset({"a", "an", "the"})
+INDEFINITE = frozenset({"a", "an", "some", "another", "one", "this"})  # ("this guy on a bike": new)
+DEFINITE = frozenset({"the", "that", "these", "those"})
+POSSESSIVE = frozenset({"my", "our", "his", "her", "their", "its", "your"})
+DETERMINERS = INDEFINITE | DEFINITE | POSSESSIVE
+FIRST_PERSON = frozenset({"i", "we", "me", "us", "my", "our"})
+#: Pronouns that are a clause's subject ("he", not "him").
+SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
+BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})
