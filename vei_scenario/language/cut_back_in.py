@@ -9,9 +9,11 @@ is heading: the writer reports a cut-in, not only that the overtake ended.
 
 Guards: a plain return ("pulled back in", "moved back"), one that ends nowhere near the ego ("cut back
 in well ahead"), one after a pass of someone else ("overtook the lorry and cut back in front of me":
-the pass is not of the ego), or in a chain that says the road user comes the wrong way, stays a return.
-So does any return on a road said to have one lane each way: there the overtaker has no lane of its
-own to stay in, and coming back in front of the ego is how every overtake on it ends.
+the pass is not of the ego), or in a chain that says the road user comes the wrong way or names an
+oncoming road user ("swerved back in front of me to avoid an oncoming car"), stays a return. So does
+any return on a road said to have one lane each way ("one lane each way", "a single carriageway", "a
+two-lane road"): there the overtaker has no lane of its own to stay in, and coming back in front of
+the ego is how every overtake on it ends.
 """
 
 from __future__ import annotations
@@ -31,6 +33,12 @@ def _passes_the_ego(m, nxt) -> bool:
     return nxt is None or nxt.slot not in ("actor", "pronoun") or nxt.value == "ego" or nxt.start > m.end + 2
 
 
+def _two_way(m) -> bool:
+    """Whether ``m`` says its chain is on a road with traffic both ways: a road user coming the wrong
+    way, or one oncoming ("to avoid an oncoming car": the usual reason for a hurried return)."""
+    return m.slot == "wrong_way" or (m.slot == "relation" and m.value == "oncoming")
+
+
 def _sudden_return(m) -> bool:
     """Whether ``m`` is a return said with a verb of a sudden move sideways ("cut back", "swerved back")."""
     return m.slot == "returns" and sudden(m.words.split()[0])
@@ -39,13 +47,14 @@ def _sudden_return(m) -> bool:
 def sudden_returns_at_the_ego(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a sudden return said after a pass of the ego in the same chain, ending close in
     front of the ego, read as a cut-in (see the module's docstring)."""
-    if stated_lanes(" ".join(tokens)) == 1:
+    one_lane = any(m.slot == "lanes" and m.value == 1 for _, mentions in clauses for m in mentions)
+    if one_lane or stated_lanes(" ".join(tokens)) == 1:
         return clauses  # (the one lane each way: coming back in is the overtake's end)
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         passed = False
-        if not any(m.slot == "wrong_way" for m in mentions):
+        if not any(_two_way(m) for m in mentions):
             for k, m in enumerate(kept):
                 nxt = kept[k + 1] if k + 1 < len(kept) else None
                 passed = passed or _passes_the_ego(m, nxt)

@@ -84,9 +84,12 @@ _PHRASE_ENDS = frozenset((".", ";", "!", "?", "and", "but", "when", "while", "as
 def _has_the_way(words: list[str]) -> bool:
     """Whether ``words`` (what follows a road user's noun, up to its verb) put it where it has the way:
     "already on the roundabout", "already circulating", "circulating from the right", "on the main
-    road", "on major rd"."""
+    road", "on major rd"; or the ring said as its place right after its noun ("a car on the roundabout
+    came round", as "already on" says)."""
     for k, w in enumerate(words):
         if w in _CIRCULATING:
+            return True
+        if k == 0 and w == "on" and (_ON_THE_RING - {"junction"}) & set(words[1:3]):
             return True
         if w == "already" and k + 1 < len(words) and words[k + 1] in ("on", "in", "round", "around", "going"):
             rest = words[k + 2 : k + 4]
@@ -104,11 +107,12 @@ def _owns(m) -> bool:
 
 
 def priority(clauses: list, tokens: list[str]) -> list:
-    """``clauses`` with a road user said to be already on the roundabout, circulating, or on the main
-    road marked as having the way ("_has_way", "_priority") on the plain verb it goes on with: at a junction it goes
-    on through the ego's path as it may ("a cyclist already on the roundabout came round from the
-    right"), even "without slowing"; it does not run a red light or force its way in. Said of the ego
-    ("I was already on the roundabout when a car came in"), it says nothing of the other."""
+    """``clauses`` with a road user said to be already on the roundabout (or on it, right after its
+    noun), circulating, or on the main road marked as having the way ("_has_way", "_priority") on the
+    plain verb it goes on with: at a junction it goes on through the ego's path as it may ("a cyclist
+    already on the roundabout came round from the right"), even "without slowing"; it does not run a
+    red light or force its way in. Said of the ego ("I was already on the roundabout when a car came
+    in"), it says nothing of the other."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)

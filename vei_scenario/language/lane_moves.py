@@ -4,7 +4,9 @@ A cut-in is a move into the ego's lane that ends close in front of it, slower th
 user that "cut in and braked" (or "cut in, then braked") is settling in front, and the braking is how
 its cut-in ends, not a second manoeuvre. Only a braking said in a hard or sudden manner ("braked
 sharply", "hard brakes", "slammed on", "braked to a stop") is the sudden stop that follows a cut-in
-in the brake-check scenario; the plain verb is not.
+in the brake-check scenario; the plain verb is not. A cut-in that ends an overtake of the ego ("overtook
+me and cut back in front of me, then braked") is made by a road user faster than the ego, with nothing
+to settle: the braking after it is a stop of its own, as after any overtake.
 
 "Slow" said as how a road user goes ("a truck ahead going very slow", "a cyclist in my lane, really
 slow", "riding slow") is its pace, as "the truck is slow" is: it keeps its lane at a low speed, no
@@ -58,21 +60,39 @@ def _plain_braking(m, tokens: list[str], nxt) -> bool:
     return not to_a_stop and not forced and not said_hard(tokens, m) and tokens[m.end : m.end + 1] != ["to"]
 
 
-def _cut_in_before(mentions: list, k: int) -> bool:
-    """Whether the verb before ``mentions[k]`` in its clause is a cut-in by the same road user: only
-    places, gaps, links and the ego named as its object stand between (no new subject, no other
-    verb)."""
+def _verb_before(mentions: list, k: int) -> int | None:
+    """The verb before ``mentions[k]`` in its clause said by the same road user, or None: only places,
+    gaps, links and the ego named as its object stand between (no new subject, no other verb)."""
     for j in range(k - 1, -1, -1):
         m = mentions[j]
         if m.slot == "behaviour":
-            return m.value[0] == "cut_in"
+            return j
         if m.slot in ("actor", "pronoun"):
             if m.value != "ego" or j == 0 or mentions[j - 1].slot not in ("relation", "behaviour"):
-                return False  # (a new subject: "cut in, and I braked"; the ego as object only right after)
+                return None  # (a new subject: "cut in, and I braked"; the ego as object only right after)
             continue
         if m.slot not in _BETWEEN:
+            return None
+    return None
+
+
+def _ends_an_overtake(mentions: list, j: int) -> bool:
+    """Whether the verb at ``mentions[j]`` follows an overtake by the same road user in its chain
+    ("overtook me on the motorway and cut back in front of me"): no other verb, no road user but the
+    ego between."""
+    for m in reversed(mentions[:j]):
+        if m.slot == "behaviour":
+            return m.value[0] == "overtake"
+        if m.slot in ("actor", "pronoun") and m.value != "ego":
             return False
     return False
+
+
+def _cut_in_before(mentions: list, k: int) -> bool:
+    """Whether the verb before ``mentions[k]`` (see :func:`_verb_before`) is a cut-in that settles in
+    front of the ego: one that does not end an overtake."""
+    j = _verb_before(mentions, k)
+    return j is not None and mentions[j].value[0] == "cut_in" and not _ends_an_overtake(mentions, j)
 
 
 def _carries_on(mentions: list, k: int) -> bool:
@@ -89,7 +109,8 @@ def _carries_on(mentions: list, k: int) -> bool:
 def braking_after_a_cut_in(clauses: list, tokens: list[str]) -> list:
     """``clauses`` without a plain braking said right after a cut-in by the same road user, in its
     clause or opening the next with "then" ("cut in and braked", "cut in front of us, then braked"):
-    the braking is how the cut-in settles in front of the ego. A hard one stays a sudden stop."""
+    the braking is how the cut-in settles in front of the ego. A hard one stays a sudden stop, and so
+    does one after the cut-in that ends an overtake (see the module's docstring)."""
     out: list = []
     last_cut_in = False  # (the clause before ended on a cut-in)
     for link, mentions in clauses:
@@ -100,8 +121,8 @@ def braking_after_a_cut_in(clauses: list, tokens: list[str]) -> list:
                 if _cut_in_before(mentions, k) or (last_cut_in and _carries_on(mentions, k)):
                     continue
             kept.append(m)
-        behaviours = [m for m in kept if m.slot == "behaviour"]
-        last_cut_in = bool(behaviours) and behaviours[-1].value[0] == "cut_in"
+        verbs = [j for j, x in enumerate(kept) if x.slot == "behaviour"]
+        last_cut_in = bool(verbs) and kept[verbs[-1]].value[0] == "cut_in" and not _ends_an_overtake(kept, verbs[-1])
         out.append((link, kept))
     return out
 

@@ -46,7 +46,7 @@ from dataclasses import replace
 
 from vei_scenario.language.clauses import SENTENCE_END
 from vei_scenario.language.cut_back_in import sudden_returns_at_the_ego
-from vei_scenario.language.discourse import VULNERABLE
+from vei_scenario.language.discourse import VEHICLES, VULNERABLE
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
 from vei_scenario.language.quantities import OBJECT_PRONOUNS, SECONDS
@@ -2515,13 +2515,14 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     crossing the ego's path: an overtake takes the one it passes as its object ("passed us"); passing
     in front of it, a road user goes across where the ego is heading. How near it came may stand
     between ("passed approx 2 m in front of us"). A verb + "past" has the ego's front as the
-    particle's object ("went right past our bonnet"): it went by across the front, not along a side."""
+    particle's object ("went right past our bonnet"): it went by across the front, not along a side
+    (a vehicle with no junction said: a cut across, see :func:`_past_the_front`)."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
             if passes(m) and m.words.split()[-1] == "past" and _close_by_the_egos_front(tokens, m.end - 1):
-                kept[k] = replace(m, value=("cross_in_front", {}))  # ("went right past our bonnet")
+                kept[k] = replace(m, value=(_past_the_front(kept[:k], clauses), {}))  # ("went right past our bonnet")
                 continue
             if not passes(m) or len(m.words.split()) != 1:
                 continue
@@ -2543,6 +2544,15 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out
+
+
+def _past_the_front(before: list, clauses: list) -> str:
+    """What a road user that went past the ego's front (its clause's mentions ``before`` the verb) did:
+    crossed the ego's path; a vehicle, where no junction is said in ``clauses``, has no arm to cross
+    from and cut across in front of the ego, as one that "cut across our bonnet" does."""
+    subject = _subject_before(before)
+    junction = any(x.slot == "map" and x.value in _THROUGH_A_JUNCTION for _, xs in clauses for x in xs)
+    return "cut_in" if subject is not None and subject.value in VEHICLES and not junction else "cross_in_front"
 
 
 def _close_by_the_egos_front(tokens: list[str], j: int) -> bool:

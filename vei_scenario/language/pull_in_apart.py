@@ -10,7 +10,8 @@ close in front of it, a cut-in after the overtake.
 Close is what the pull-in's clause says: a close manner on the scales of :mod:`manner` ("just in front
 of me", "I had to brake"), an exact place ("right on my nose"), a few metres ("5 m ahead of the ego"),
 or a verb of a sudden move sideways ("dived in", "swerved in", "cut in"); a wide margin ("with plenty of
-room", "by a good 50 metres") or none said leaves the ordinary end of an overtake ("It pulled in ahead
+room", "by a good 50 metres"; for the sudden verb, one said anywhere in its sentence: "cut back in front
+of me, leaving plenty of room") or none said leaves the ordinary end of an overtake ("It pulled in ahead
 of me").
 
 In the same sentence (up to ". ! ?": a ";" or ":" joins two clauses of one sentence) a pull-in said
@@ -27,10 +28,19 @@ in": an oncoming overtaker back to its own side) stays folded.
 
 from __future__ import annotations
 
-from vei_scenario.language.clauses import sentence_start
+from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.discourse import FIRST_PERSON
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.manner import BREAKS, DANGEROUS, EXACTLY, METRES, MODERATE, SMALL_SPARE_M, stated_manner
+from vei_scenario.language.manner import (
+    BREAKS,
+    DANGEROUS,
+    EXACTLY,
+    METRES,
+    MODERATE,
+    SAFE,
+    SMALL_SPARE_M,
+    stated_manner,
+)
 
 #: The mark an overtake or a cut-in carries to the tidying of a road user's behaviours: where its sentence starts.
 SENTENCE = "_sentence_start"
@@ -99,7 +109,9 @@ def _close(tokens: list[str], start: int, place: int, stop: int) -> bool:
     if any(w in _IN_FRONT | _ONTO and said[k - 1 : k] != [] and said[k - 1] in EXACTLY for k, w in enumerate(said)):
         return True  # ("right on my nose")
     measure = any(_metres(w) is not None for w in tokens[place:stop])  # ("by a good 50 metres")
-    return not measure and sudden(tokens[start])
+    sentence = tokens[sentence_start(tokens, start, _SENTENCE_ENDS) : sentence_stop(tokens, start, _SENTENCE_ENDS)]
+    wide = stated_manner(sentence) == SAFE  # (said after the clause: "cut back in front of me, leaving plenty of room")
+    return not measure and not wide and sudden(tokens[start])
 
 
 def ends_close_at_the_ego(tokens: list[str], start: int) -> bool:

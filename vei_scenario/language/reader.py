@@ -298,6 +298,7 @@ class _Actor:
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
+    refuses_way: bool = False  # said not to give way, the act itself ("does not give way", "fails to yield")
     same_way: bool = False  # its move said as one made going the ego's way ("cut me up")
     speed_to_mps: float | None = None  # the speed it changes to ("slows from 80 to 30 km/h": 30)
     accel_mps2: float | None = None  # how hard it changes speed ("brakes at 6 m/s²")
@@ -1214,6 +1215,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             continue
         if slot == "behaviour" and _denied(tokens, i) and key[0] not in _NEGATORS:
             name, cfg = _DENIED.get(value[0], ("keep_going", {}))  # ("does not stop": it carries on)
+            cfg = {**cfg, "_refused_way": 1.0} if value[0] == "give_way" else cfg  # (for ring_entry)
             held = {**cfg, "_still": 1.0} if value[0] == "keep_going" else cfg
             value = (name, {**cfg, "_denied": 1.0} if value[0] not in _HELD_BACK else held)
         used = len(key) + (1 if adverb or toward_at else 0)
@@ -2588,6 +2590,7 @@ def _read(text: str) -> Reading:
             cfg.pop("_still", None)
             a.has_way = a.has_way or bool(cfg.pop("_has_way", None))
             a.priority = a.priority or bool(cfg.pop("_priority", None))
+            a.refuses_way = a.refuses_way or bool(cfg.pop("_refused_way", None))
             a.behaviours[i] = (name, cfg, crit_here or _verb_criticality(words), lk)
         if crit_here:
             if not named and isinstance(subject, _Actor) and subject.crit is None:
@@ -2759,7 +2762,6 @@ def _read(text: str) -> Reading:
         ):
             side = a.kerb_side or a.side
             a.behaviours = kerb_ride.along_then_out(a.behaviours, a.across, side) or a.behaviours
-        told = [b[0] for b in a.behaviours]  # (its acts as said, before they are specialised below)
         behaviours = _tidy(a)
         if a.kind == "pedestrian" and a.goes_on:  # a walker who does not give way or wait: crosses
             behaviours = [
@@ -2920,7 +2922,8 @@ def _read(text: str) -> Reading:
             r.map_kind,
             signal,
             spec.relation,
-            told,
+            a.refuses_way,
+            a.priority,
             a.takes_an_exit,
             spec.behaviours,
             said,
@@ -4092,11 +4095,13 @@ def _apply(m, who, r, link, added) -> None:
             name, cfg = m.value
             if any(w in _NEGATORS for w in m.words.split()):
                 a.goes_on = True  # ("fails to yield", "does not give way": one phrase, and it goes on)
+                a.refuses_way = a.refuses_way or name == _DENIED["give_way"][0]  # (the lexicon's "fail to yield")
             a.goes_over = a.goes_over or junctions.goes_on_over(name, m.words, [m.next_])  # (said twice too)
             if a.behaviours and a.behaviours[-1][0] == name and name != "change_speed":
                 a.goes_on = a.goes_on or bool(cfg.get("_denied"))  # ("enters and fails to yield": it goes)
                 a.has_way = a.has_way or bool(cfg.get("_has_way"))  # ("going round ... we yield; it goes on")
                 a.priority = a.priority or bool(cfg.get("_priority"))
+                a.refuses_way = a.refuses_way or bool(cfg.get("_refused_way"))
                 continue  # ("brakes ... and stops": said twice over)
             said = m.words if not _adverb(m.next_) else f"{m.words} {m.next_}"  # ("brakes moderately")
             by = m.next_ in _NO_OBJECT or m.next_ in _THE_EGO_AS_OBJECT  # ("went by", "passed us")
