@@ -2,19 +2,18 @@
 
 Where no light, signal or stop sign is said, a roundabout has nothing to run: a road user told by its
 going in or on ("came onto the roundabout from the left without giving way", "rolled onto it from
-the road on my left", "at the roundabout a Corolla comes in from the right and doesn't stop") turns out of its arm onto
-the ring, into the ego's way round, across the ego's path: a turn into the ego's road (``turn_into``,
-which rides the ring from that arm), not a run of a red that is not there. "Without giving way" or
-"without stopping" says how it went on, not where.
+the road on my left", "at the roundabout a Corolla comes in from the right and doesn't stop") turns
+out of its arm onto the ring, into the ego's way round, across the ego's path: a turn into the ego's
+road (``turn_into``, which rides the ring from that arm), not a run of a red that is not there.
+"Without giving way" or "without stopping" says how it went on, not where.
 
 What must not be read so: a roundabout with a light or signal said (a red there is run), a road user
 told refusing to give way in so many words ("fails to yield", "does not give way": the reader's
-denied give-way, read as driving through the entry), one not from an arm on the ego's left or right (the
-opposite arm, ahead, on the ring beside the ego or already on it: "a car on the roundabout came round
-from the right"), one said to take an exit ("takes the exit on the
-left": it leaves by that arm), a meeting at the next junction after the roundabout ("we came out of the
-roundabout and a cyclist came from the left at the next junction"), and any junction that is no
-roundabout.
+denied give-way, read as driving through the entry), one not from an arm on the ego's left or right
+(the opposite arm, ahead, on the ring beside the ego or already on it: "a car on the roundabout came
+round from the right"), one said to take an exit ("takes the exit on the left": it leaves by that
+arm), a meeting at the next junction after the roundabout ("we came out of the roundabout and a
+cyclist came from the left at the next junction"), and any junction that is no roundabout.
 """
 
 from __future__ import annotations
