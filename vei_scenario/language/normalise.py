@@ -17,6 +17,7 @@ import re
 import unicodedata
 from functools import lru_cache
 
+from vei_scenario.language import quantities as Q
 from vei_scenario.language import spoken_lengths
 from vei_scenario.language.lemmas import english, lemmas
 
@@ -43,9 +44,6 @@ _UNIT_AFTER = re.compile(
 #: reader reads a bare number after "at", "doing", "about" as km/h, and one after "on" where a verb of
 #: keeping a speed says so.
 _SPEED_BEFORE = re.compile(r"\b(at|doing|about|like|going|around|roughly|approximately|on)\s+$")
-#: "at" or "doing", an article and one or two modifiers before a number in words ("at a cautious thirty",
-#: "doing a steady sixty", "at a very sensible sixty-five"): a speed, as "at a steady 50" in figures is.
-_MODIFIED_SPEED_BEFORE = re.compile(r"\b(?:at|doing)\s+an?\s+(?:[a-z]+\s+)?[a-z]+\s+$")
 #: A guess between a verb of going and a number in words ("doing, I don't know, forty", "going probably
 #: sixty"), or the limit said before its number ("doing the limit, seventy"): the number is a speed.
 _GUESS_BEFORE = re.compile(
@@ -113,6 +111,14 @@ def _number_value(words: str) -> int | None:
     return total + current if seen else None
 
 
+def _after_modifiers(text: str, m: re.Match) -> bool:
+    """Whether the number in words ``m`` follows "at" or "doing", an article and one or two modifiers ("at
+    a cautious thirty", "doing a steady sixty", "at a very sensible sixty-five"): a speed, as "at a steady
+    50" in figures is, by the same test (:func:`quantities.speed_after_modifiers`: no count of a noun)."""
+    after = re.match(r"[\s-]*([a-z]*)", text[m.end() :], re.IGNORECASE)
+    return Q.speed_after_modifiers(text[: m.start()].split()[-4:], after.group(1) if after else "")
+
+
 def _numbers_in_words(text: str) -> str:
     """Digits for numbers written as words where a unit follows ("thirty kilometer per hour")."""
 
@@ -122,7 +128,7 @@ def _numbers_in_words(text: str) -> str:
         before = before or _CHOICE_BEFORE.search(text, max(0, m.start() - 40), m.start())
         before = before or _GUESS_BEFORE.search(text, max(0, m.start() - 40), m.start())
         before = before or _SPEED_AFTER.match(text, m.end())  # ("sixty speed only")
-        before = before or _MODIFIED_SPEED_BEFORE.search(text, max(0, m.start() - 40), m.start())
+        before = before or _after_modifiers(text, m)  # ("at a cautious thirty", "at a very sensible sixty-five")
         if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             return str(value) if value is not None and value >= 15 else m.group(0)

@@ -225,9 +225,12 @@ _RANGE = re.compile(
 _UNITS_AHEAD = r"(?=\s*(?:km/h|kph|kmh|mph|m/s|m|metres|meters)\b)"
 #: "40ish mph", "70-odd mph", "30 plus km/h": a hedge between a number and its unit.
 _HEDGED_AFTER = re.compile(r"\b(\d+(?:\.\d+)?)\s*-?\s*(?:ish|odd|plus|or so)\b" + _UNITS_AHEAD)
+#: The verbs of going (and "at") after which a bare number hedged or ranged is a speed ("doing 50ish",
+#: "drove 30-35"): the same for a hedge as for a range.
+_GOING_BARE = r"(doing|going|did|went|drove|driving|travelling|traveling|travelled|traveled|riding|cruising|at)"
 #: "doing 50ish", "did 40-ish in the left lane": a bare speed hedged after it, after a verb of going (or
 #: "at"), is about that number; "a 40ish man" (an age) has no such verb before it.
-_HEDGED_BARE = re.compile(r"\b(doing|going|did|driving|travelling|traveling|riding|cruising|at)\s+(\d+)\s*-?\s*ish\b")
+_HEDGED_BARE = re.compile(rf"\b{_GOING_BARE}\s+(\d+)\s*-?\s*ish\b")
 #: "40-something mph": a number in the decade of a round one, about its middle.
 _SOMETHING = re.compile(r"\b([1-9])0\s*-?\s*something\b" + _UNITS_AHEAD)
 #: "at 40 to 50 km/h", "doing about 30 to 40 mph": a choice of two after a word of a speed held, its
@@ -239,23 +242,45 @@ _CHOICE_TO = re.compile(
 #: "doing 30-35", "going between 40 and 50", "travelling 60 to 70", "doing 50 or 60", "doing about 30,
 #: 35": a range or a choice said bare after a verb of going (or "at"), its unit the text's, with no clock,
 #: age or measure after it ("at 3-4 pm", "doing 30, 40 m behind"). A talker gives a range with a comma
-#: as a writer does with a dash; a falling pair ("going 50, 20 faster than ...") is no range.
+#: as a writer does with a dash, where its phrase ends with it (:func:`_bare_range`); a falling pair
+#: ("going 50, 20 faster than ...") is no range.
 _BARE_RANGE = re.compile(
-    r"\b(doing|going|travelling|traveling|driving|riding|cruising|at)"
-    r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
+    _GOING_BARE + r"((?:\s+(?:somewhere|about|around|roughly|approximately|approx|maybe|like|between))*)\s+"
     r"(\d+(?:\.\d+)?)\s*(-|\u2013|\u2014|/|to|and|or|,)\s*(\d+(?:\.\d+)?)\b"
     r"(?!\s*(?:[:.]\d|am\b|pm\b|a\.m|p\.m|hours?\b|hrs\b|o'clock|%|years?\b|yrs\b|mins?\b|minutes\b|seconds?\b"
     r"|s\b|m\b|metres\b|meters\b|feet\b|ft\b|yards?\b|car\b|km\b(?!/h)|miles?\b))"
 )
 
 
+#: The word after a number (or the mark, or the text's end).
+_NEXT_WORD = re.compile(r"\s*([a-z/]+|[^\sa-z]|$)", re.IGNORECASE)
+
+
 def _bare_range(m: re.Match) -> str:
     """ "doing about 32.5" for "doing 30-35": the middle of a range of speeds said bare; as written
-    where it is none ("at 5 and 10 m later": "and" makes a range only after "between"; "2 to 300")."""
+    where it is none ("at 5 and 10 m later": "and" makes a range only after "between"; "2 to 300"). With
+    a comma the second number must end the range's phrase: a unit of speed, a mark, a word that ends a
+    note or names where one goes, "max" or "tops" after it ("doing 30, 35 max", "going 30, 35 through
+    the village"); else it counts what follows ("doing 30, 35 people were on the pavement", "at 30, 40
+    kids were at the gate", "going 30, 45 degrees to the road"): a new clause, not a range."""
     low, high = float(m.group(3)), float(m.group(5))
     if (m.group(4) == "and" and "between" not in m.group(2)) or not 3 <= low < high <= 250 or high > 2 * low + 10:
         return m.group(0)
+    if m.group(4) == "," and not _ends_a_speed(_NEXT_WORD.match(m.string, m.end()).group(1).lower()):
+        return m.group(0)
     return f"{m.group(1)} about {(low + high) / 2:.1f}"  # (with its decimal: no value a writer rounded to)
+
+
+def _ends_a_speed(word: str) -> bool:
+    """Whether ``word`` after a bare number ends it as a speed: a unit of speed, a mark or a word that
+    ends a note or opens a clause, a place one goes ("on", "through", "at"), or "max"/"tops"."""
+    return (
+        word in V.SPEED_UNITS
+        or word in NOTE_ENDS
+        or word in _CLAUSE_OPENERS
+        or word in WHERE_AFTER_SPEED
+        or word in ("at", "max", "tops")
+    )
 
 
 #: "30 mph-ish": a hedge on the unit.
@@ -436,7 +461,7 @@ def over_the_limit(tokens: list[str], i: int) -> bool:
         if k < len(tokens) and tokens[k] == "limit":
             return True
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""  # ("by 15 mph", "by 15."; not "by 30 m": a distance)
-    by = i >= 2 and tokens[i - 1] == "by" and (nxt in V.SPEED_UNITS or nxt in _NOTE_ENDS)
+    by = i >= 2 and tokens[i - 1] == "by" and (nxt in V.SPEED_UNITS or nxt in NOTE_ENDS)
     return by and "limit" in tokens[max(i - 5, 0) : i - 1]
 
 
@@ -513,15 +538,32 @@ WHERE_AFTER_SPEED = frozenset(
 
 
 def after_at(tokens: list[str], i: int) -> bool:
-    """Whether a bare number at ``i`` follows "at" (or "doing") past an article and one modifier
-    ("at a steady 50", "doing a brisk 30"), or a word that describes it before that ("at a nice steady
-    50", "at a very sensible 65"): a speed, as "at 50" is. The first of two words is then an adjective
-    or an adverb and no noun, so a place named there ("at the old station 12 ...") stays no speed."""
-    if i < 3 or not tokens[i - 1].isalpha():
+    """Whether a bare number at ``i`` is a speed after "at" (or "doing"), an article and one or two
+    modifiers (:func:`speed_after_modifiers`)."""
+    return speed_after_modifiers(tokens[max(i - 4, 0) : i], tokens[i + 1] if i + 1 < len(tokens) else "")
+
+
+def speed_after_modifiers(before: list[str], after: str) -> bool:
+    """Whether a number with the words ``before`` it and the word ``after`` it follows "at" (or "doing")
+    past an article and one modifier ("at a steady 50", "doing a brisk 30"), or a word that describes it
+    before that ("at a nice steady 50", "at a very sensible 65"): a speed, as "at 50" is. The first of two
+    words is then an adjective or an adverb and no noun, so a place named there ("at the old station 12
+    ...") stays no speed; and a number before a word that is only a noun counts that noun ("at a very
+    quiet 4 way stop", "doing a careful 3 point turn", "at a nice 5 star hotel"): no speed. Figures and
+    numbers in words alike (:mod:`normalise` asks it of "at a cautious thirty")."""
+    words = [w.lower() for w in before]
+    if len(words) < 3 or not words[-1].isalpha() or _counted(after.lower()):
         return False
-    if tokens[i - 2] in _ARTICLES and tokens[i - 3] in ("at", "doing"):
+    if words[-2] in _ARTICLES and words[-3] in ("at", "doing"):
         return True
-    return i >= 4 and tokens[i - 3] in _ARTICLES and tokens[i - 4] in ("at", "doing") and _describes(tokens[i - 2])
+    return len(words) >= 4 and words[-3] in _ARTICLES and words[-4] in ("at", "doing") and _describes(words[-2])
+
+
+def _counted(word: str) -> bool:
+    """Whether ``word`` is only a noun ("way", "point", "star", "room"), which a number before it counts;
+    not a word of time or place that may follow a speed ("today", "past", "behind": adverbs too)."""
+    said = lemmas(word) if word.isalpha() else {}
+    return "NOUN" in said and not {"ADJ", "ADV"} & set(said) and word != "all"  # ("at a steady 50 all the way")
 
 
 def _describes(word: str) -> bool:
@@ -542,11 +584,11 @@ def held_on(tokens: list[str], i: int) -> bool:
         return False
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
     verbs = set(lemmas(tokens[i - 2]).get("VERB", ()))
-    return bool(_HELD_ON & verbs) and (nxt in _NOTE_ENDS or nxt in WHERE_AFTER_SPEED or nxt in ("the", "all"))
+    return bool(_HELD_ON & verbs) and (nxt in NOTE_ENDS or nxt in WHERE_AFTER_SPEED or nxt in ("the", "all"))
 
 
 #: Words after which a number ends its note ("ego 50, ...", "ego 50 and a van ...").
-_NOTE_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", ")"})
+NOTE_ENDS = frozenset({"", ".", ",", ";", "!", "?", "and", "then", "when", "while", "but", ")"})
 
 
 def after_ego(tokens: list[str], i: int) -> bool:
@@ -554,7 +596,7 @@ def after_ego(tokens: list[str], i: int) -> bool:
     50", "SUT 40, cyclist ..."): the ego's speed, as "cyclist 15 km/h" is the cyclist's. (Only the
     ego's: "Vehicle 2." or "lane 3," name things by a number.)"""
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
-    return i >= 1 and tokens[i - 1] == "ego" and nxt in _NOTE_ENDS
+    return i >= 1 and tokens[i - 1] == "ego" and nxt in NOTE_ENDS
 
 
 #: ``mention_ending_at(k)``: the start of the road-user (or ego) mention whose last word is token ``k``.

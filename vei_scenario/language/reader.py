@@ -781,9 +781,27 @@ def _number(
     where = going and nxt in Q.WHERE_AFTER_SPEED  # ("going 40 down the high street")
     if i == 1 and tokens[0] in _HEADING_VERBS:
         return "skip", value, 1  # ("Drive 3 - please read": the heading's number, no speed)
+    going = going and not (prev in _DO and _another_occasion(tokens, i))  # ("I did 15 on that road once")
     if (going or Q.after_ego(tokens, i)) and 3 <= value <= 250 and (ends or hedged or where):
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
     return "unknown", value, 1
+
+
+#: The finite forms of "doing 50", and the words that, closing their clause, put it on another occasion
+#: ("once", "before", "last year", "years ago", "usually"): a speed of a habit or of another day.
+_DO = frozenset({"did", "does"})
+_ANOTHER_OCCASION = frozenset({"once", "before", "ago", "usually", "normally", "often", "always", "sometimes"})
+_LAST = frozenset({"last", "every"})
+
+
+def _another_occasion(tokens: list[str], i: int) -> bool:
+    """Whether the clause of the number at ``i`` ends with a time of another occasion ("I did 15 on that
+    road once, and today ...", "we did 80 on the motorway last year, but ..."): not this story's speed.
+    ("did 60 on the ring road once the lights changed": "once" opens a clause, and does not close it.)"""
+    k = i + 1
+    while k < len(tokens) and tokens[k] not in Q.NOTE_ENDS:
+        k += 1
+    return tokens[k - 1] in _ANOTHER_OCCASION or (k - i > 2 and tokens[k - 2] in _LAST)
 
 
 def _changes_speed_before(tokens: list[str], k: int) -> bool:
