@@ -1,5 +1,5 @@
 """The closed classes of English the reader's modules share: articles and other determiners, the
-subject pronouns and the forms of "be".
+subject pronouns, the forms of "be", and the prepositions and conjunctions that end a phrase or a clause.
 
 They sit in a module of their own, below every reading rule, so that any rule can name them without
 importing a reader that may in turn import it: a rule of the outcome reader needs a subject pronoun as
@@ -18,4 +18,12 @@ DETERMINERS = INDEFINITE | DEFINITE | POSSESSIVE
 FIRST_PERSON = frozenset({"i", "we", "me", "us", "my", "our"})
 #: Pronouns that are a clause's subject ("he", not "him").
 SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
+#: Words that end a noun phrase after its head: prepositions, conjunctions and relative words ("the
+#: pallets lying in the lane": "the pallets").
+PHRASE_ENDS = frozenset(("of", "at", "on", "in", "from", "behind", "and", "with", "to", "without", "lying", "which",
+                         "that", "who", "before", "after", "as", "while", "by", "for", "ahead"))  # fmt: skip
+#: Conjunctions that end a clause, and with it the scope of a negation or a hedge.
+CLAUSE_BREAKS = frozenset(
+    ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
+)
 BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})

@@ -34,9 +34,9 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.elided_verb import elliptical_negation
-from vei_scenario.language.function_words import SUBJECT_PRONOUNS
+from vei_scenario.language.function_words import CLAUSE_BREAKS, PHRASE_ENDS, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.light_contact import knock_felt, marking_met
+from vei_scenario.language.light_contact import LOCATING, knock_felt, marking_met
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
 from vei_scenario.language.settings import FOOT_CROSSINGS
@@ -47,9 +47,7 @@ COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critic
 
 #: What ends a clause, and with it the scope of a negation or a hedge.
 _BREAK_PUNCT = frozenset(".;!?:,")
-_BREAK_WORDS = frozenset(
-    ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
-)
+_BREAK_WORDS = CLAUSE_BREAKS
 #: Negators: they deny what follows them in their clause.
 _NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none", "cannot"))
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
@@ -102,8 +100,7 @@ _PLACES = frozenset(
      "place")
 )  # fmt: skip
 #: Words that end an object's noun phrase ("into the pallets lying in the lane": "the pallets").
-_PHRASE_ENDS = frozenset(("of", "at", "on", "in", "from", "behind", "and", "with", "to", "without", "lying", "which",
-                          "that", "who", "before", "after", "as", "while", "by", "for", "ahead"))  # fmt: skip
+_PHRASE_ENDS = PHRASE_ENDS
 #: The parts of a road user one runs into.
 _PARTS = frozenset(("side", "back", "rear", "front", "wing", "door", "trailer", "bumper", "tail", "bonnet", "boot"))
 #: Words that end a small margin: units of length and the idioms of a hair's width.
@@ -509,8 +506,11 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         return names_road_user(words[k + 1 : i])  # ("sent the jogger flying", "knocked him sprawling")
     if w == _INTO and all(x in _ONSET for x in words[:i]) and _into_road_user(words, i):
         return True  # (a clause of its own: ", straight into my door", "Right into the back of the van.")
-    if w == "under" and (i == 0 or _verb_before_path(words, i) or all(x in _ONSET for x in words[:i])):
-        obj = words[i + 1 : i + 6]
+    if w == "under" and _came_out_under_the_front(words, i):
+        return False  # ("pulled out right under my bonnet": where it came, just in front of the ego)
+    path = i == 0 or _verb_before_path(words, i) or all(x in _ONSET for x in words[:i])
+    if w == "under" and (path or (prev == "right" and not set(words[i + 1 : i + 3]) & _FRONT_SEEN)):
+        obj = words[i + 1 : i + 6]  # (met wherever it came from: "from between the cars right under the wheels")
         if obj[:1] and (obj[0] in _POSSESSIVES or obj[0] in ("the", "a")) and _under_road_user(obj[1:]):
             return True  # ("went under the nearside front", "and under the wheels of the lorry")
     if w in ("versus", "vs") and 0 < i < len(words) - 1:
@@ -524,7 +524,7 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         and (prev in ("a", "an", "the") or words[i - 2 : i - 1] == ["a"])
     ):
         return True
-    if knock_felt(words, i):
+    if knock_felt(words, i) and _knock_on_a_road_user(words, i):
         return True  # ("felt the tap", "heard a soft clunk from the bumper")
     lem = _lemmas(w)
     if "wipe" in lem and "out" in words[i + 1 : i + 4]:
@@ -681,13 +681,54 @@ _DETERMINERS = frozenset(("the", "a", "an", "this", "that", "some"))
 
 def _verb_before_path(words: list[str], i: int) -> bool:
     """Whether a verb heads the path that the preposition at ``i`` opens, right before it or past the
-    adverbs of degree that lead a path ("went under", "went right under the lorry", "slid straight
-    under"). "right" after a noun is the degree of a place, no verb ("out onto the roundabout right
-    under the bonnet": where it came, in front of the ego, not under it)."""
+    adverbs of degree that lead a path and a particle of the verb ("went under", "went right under the
+    lorry", "slid straight under", "ran out right under the wheels"). "right" after a noun is the
+    degree of a place, no verb ("out onto the roundabout right under the bonnet": where it came, in
+    front of the ego, not under it; the caller takes a part other than the ego's front there as met:
+    "from between the cars right under the wheels")."""
     k = i - 1
     while k > 0 and words[k] in _ONSET and words[k] != "and":
         k -= 1
+    if k > 0 and words[k] in _PARTICLES | _OFF_AND_BACK:
+        k -= 1  # ("ran out right under", "fell off right under": the particle of the verb)
     return k >= 0 and _is_verb(words[k]) and (k == i - 1 or words[k] not in _ONSET)
+
+
+#: The particles of a verb of motion besides :data:`_PARTICLES` ("fell off", "stepped back").
+_OFF_AND_BACK = frozenset(("off", "back"))
+#: The ego's front as seen from its seat: what comes out "right under my bonnet" is just in front of it.
+_FRONT_SEEN = frozenset(("bonnet", "hood", "nose"))
+
+
+def _came_out_under_the_front(words: list[str], i: int) -> bool:
+    """Whether "under" at ``i`` is "right under my bonnet" (or the nose or the hood) after a coming out
+    in its clause ("pulled out right under my bonnet", "came out of the side road right under my
+    bonnet", "came out right under my nose"): where the other came, just in front of the ego, not under
+    it: a near miss, not a contact."""
+    obj = words[i + 1 : i + 3]
+    return (
+        words[i] == "under"
+        and words[i - 1 : i] == ["right"]
+        and len(obj) == 2
+        and (obj[0] in _POSSESSIVES or obj[0] == "the")
+        and obj[1] in _FRONT_SEEN
+        and "out" in words[: i - 1]
+    )
+
+
+def _knock_on_a_road_user(words: list[str], i: int) -> bool:
+    """Whether the light knock at ``i`` (one :func:`knock_felt` accepts) is located on or from a
+    vehicle's part or a road user ("a small knock on the front", "a soft clunk from the bumper", "the
+    nudge on my door") or nowhere ("felt the tap"); not one on a body part, a window or a thing ("a tap
+    on my shoulder", "a knock on the window", "a clunk from the engine", "a knock from the boot": a
+    load, where "boot" is no body part's wear)."""
+    after = words[i + 1 : i + 7]
+    if not after or after[0] not in LOCATING:
+        return True
+    obj = after[1:]
+    if set(obj[:3]) & _BODY_PARTS:
+        return False
+    return _vehicle_part(obj) or names_road_user(obj[:4]) or obj[:1] in ([x] for x in _PERSON_OBJECTS)
 
 
 def _under_road_user(obj: list[str]) -> bool:
@@ -846,17 +887,18 @@ def _into_road_user(words: list[str], j: int) -> bool:
 
 def _owned_part(chunk: list[str], rest: list[str]) -> bool:
     """Whether the noun phrase ``chunk`` after "into" ends in a word that names a vehicle's part as well
-    as a place ("corner") and a road user owns it: a possessive opens it ("into my rear corner") or an
-    "of" after it names one by its head ("into the front left corner of the car"; not "the corner of
-    the car park", whose head is a place)."""
+    as a place ("corner") and a road user owns it: a possessive opens it ("into my rear corner"; not
+    "into my corner of the junction", the writer's share of a place) or an "of" after it names one by
+    its head ("into the front left corner of the car"; not "the corner of the car park", whose head is
+    a place)."""
     if chunk[-1] not in _VEHICLE_PARTS or set(chunk[:-1]) & _PLACES:
-        return False
-    if chunk[0] in _POSSESSIVES:
-        return True
-    if rest[:1] != ["of"]:
         return False
     owner = [w for w in rest[1:5] if w not in _DETERMINERS and w not in _POSSESSIVES]
     head = next((k for k, w in enumerate(owner) if w in _PHRASE_ENDS or w in _BREAK_WORDS), len(owner))
+    if chunk[0] in _POSSESSIVES:  # (not the writer's share of a place: "into my corner of the junction")
+        return not (rest[:1] == ["of"] and head > 0 and owner[head - 1] in _PLACES | _ENTERED)
+    if rest[:1] != ["of"]:
+        return False
     return head > 0 and (_road_user_word(owner[head - 1]) or owner[head - 1] in _EGO_HEADS)
 
 
@@ -1765,7 +1807,8 @@ def _sharp_brake(words: list[str], i: int) -> bool:
 
 @dataclass(frozen=True)
 class Cue:
-    """One statement of the outcome found in a clause: what it says (``contact``, ``hedged``,
+    """One statement of the outcome found in a clause: what it says (``contact``, ``knock``: a light
+    knock felt or heard, a contact unless a miss or a safe pass is said, ``hedged``,
     ``denied``, ``required``: a contact denied as what the test requires, ``near``, ``close``,
     ``safe``, ``lucky``: relief at luck, ``late``: the other seen late, ``unforced``: an escape not
     needed, ``evade``, ``brake``, ``yield``, ``critical``: the scenario rated so) and the words it was
@@ -2431,7 +2474,9 @@ def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> 
     if verdict is None:
         return cues
     return [
-        Cue("overruled", c.words) if c.kind == "contact" and k < len(sentence_of) and sentence_of[k] < verdict else c
+        Cue("overruled", c.words)
+        if c.kind in ("contact", "knock") and k < len(sentence_of) and sentence_of[k] < verdict
+        else c
         for k, c in enumerate(cues)
     ]
 
@@ -2493,8 +2538,13 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             ):
                 add("hedged")  # ("a split second from ploughing into the back of her")
                 continue
+            if _came_out_under_the_front(words, i):
+                add("near")  # ("came out right under my bonnet": just in front of the ego)
+                continue
             if _is_contact(words, i, named):
                 kind = _contact_kind(words, i, clause, sentence)
+                if kind == "contact" and knock_felt(words, i):
+                    kind = "knock"  # (a light knock felt or heard: a contact a miss said outranks)
                 if kind is not None:
                     add(kind)
                 if kind == "denied" and _verdict_denial(words, i, doer):
@@ -2826,6 +2876,10 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
     other, as the ego's evasion is ("a rider ran the red and the Tesla braked hard"); without one, a
     hard brake is the lead vehicle's own act ("the lead car brakes hard"), no escape."""
     kinds = {c.kind for c in cues}
+    if "knock" in kinds:
+        kinds.discard("knock")  # (a light knock felt or heard is a contact, unless a miss or a safe pass is
+        if not kinds & {"near", "safe"}:  # said: "I felt a tap but it was just a pothole; he passed safely")
+            kinds.add("contact")
     if "escape" in kinds:
         kinds.discard("escape")
         if entered:
