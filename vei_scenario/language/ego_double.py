@@ -185,17 +185,17 @@ WHEN = frozenset(("when", "as"))
 _SUBJECT_WORDS = 4
 
 
-def stops_when_someone_comes(a: _Said, others: list, specs: list, tokens: list[str], unnamed: bool) -> bool:
+def stops_when_someone_comes(a: _Said, others: list, specs: list, tokens: list[str]) -> bool:
     """Whether road user ``a``, said only to stop, has the time of its stop told by a clause that
     "when" or "as" opens right after it in its sentence, whose subject is the next road user named
     and gets into its path ("the van stopped when a boy stepped out on the left", "the vehicle shall
     stop when a pedestrian steps out"): the stop is for that one, though named after it, as the ego
     stops in the story told from it. ``others`` are the road users gathered (``a`` among them), in
-    the order of ``specs``; ``tokens`` the scanned words their names end in. Only where nothing else
-    names the ego and no one tells it in the first person (``unnamed``, and no "I" or "we" even of a
-    writer read as outside the scene: a narrator is the ego, and the one they stop behind, overtake or
-    meet is someone else), and not one the words set apart (:func:`_set_apart`)."""
-    if not unnamed or FIRST_PERSON & set(tokens) or _set_apart(a, others, tokens):
+    the order of ``specs``; ``tokens`` the scanned words their names end in. Only where no one tells
+    the story in the first person (no "I" or "we", not even of a writer read as outside the scene: a
+    narrator is the ego, and the one they stop behind, overtake or meet is someone else), and not one
+    the words set apart (:func:`_set_apart`)."""
+    if FIRST_PERSON & set(tokens) or _set_apart(a, others, tokens):
         return False
     after = [(x.named_end, s) for x, s in zip(others, specs) if x.named_end > a.named_end >= 0]
     if not after:
@@ -223,14 +223,12 @@ def _set_apart(a: _Said, others: list, tokens: list[str]) -> bool:
     return any("near_other" in x.said for x in others if x.named_end > a.named_end)
 
 
-def _double(
-    a: _Said, spec: ActorSpec, others: list, specs: list, tokens: list[str], unnamed: bool, new_too: bool = False
-) -> bool:
+def _double(a: _Said, spec: ActorSpec, others: list, specs: list, tokens: list[str], new_too: bool = False) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
     doing only what the ego does (only stopping where another of ``specs`` gets into its path), and
-    nothing to another road user (none is its verb's object). ``tokens`` and ``unnamed`` as
-    :func:`merge_into_ego` takes them; ``new_too``: one brought in as new with a speed may be it."""
+    nothing to another road user (none is its verb's object). ``tokens`` as :func:`merge_into_ego`
+    takes them; ``new_too``: one brought in as new with a speed may be it (a text naming no ego)."""
     names = {b[0] for b in spec.behaviours}
     return (
         spec.kind in _EGO_KINDS
@@ -242,7 +240,7 @@ def _double(
             names != {"stop"}
             or spec.speed_mps is None
             and not a.stationary
-            and (stops_for_someone(spec, specs) or stops_when_someone_comes(a, others, specs, tokens, unnamed))
+            and (stops_for_someone(spec, specs) or stops_when_someone_comes(a, others, specs, tokens))
         )
         and not _placed(a)
         and (a.det not in NEW or (new_too and spec.speed_mps is not None))
@@ -261,11 +259,9 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool, tokens: list[s
     Returns ``actors`` without it."""
     specs = reading.actors
     tokens = list(tokens)
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens, unnamed)]
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
-        doubles = [
-            k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens, unnamed, True)
-        ]
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens, True)]
     deeds = [  # (a parked lorry does nothing the ego meets: "a van hit my dad" beside it is no report of the van)
         s
         for a, s in zip(actors, specs)
