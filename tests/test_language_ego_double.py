@@ -62,7 +62,7 @@ def test_the_vehicle_the_story_is_told_from_is_the_ego(text, kind, ego_kph):
 )
 def test_without_the_rule_the_ego_would_be_a_road_user_of_its_own(text, monkeypatch):
     """The wordings above need this module: the rest of the reader reads the ego's vehicle apart."""
-    monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading, unnamed=False, tokens=(): actors)
+    monkeypatch.setattr(ego_double, "merge_into_ego", lambda actors, reading, unnamed, tokens: actors)
     monkeypatch.setattr(
         report_vehicle,
         "merge_report_vehicle",

@@ -16,7 +16,9 @@ story as new ("a car was going at 40": the ego, whose story it is, is never new 
 said to see ("my dad saw the car hit a cyclist"), one said only to stop while no one gets into its path
 ("the bus was stopped at the stop": it may stand there; "a cyclist cut across and the vehicle came to
 a halt" is the ego stopping for the cyclist, and so is "the van came to a stop when a boy stepped out",
-whose "when" clause tells what happened first though it is said after), one slower or faster than the
+whose "when" clause tells what happened first though it is said after, where no narrator tells
+the story and nothing sets the van apart, as "I overtook it", "the target vehicle", "the car in the
+other lane" and "the cyclist behind it" do), one slower or faster than the
 traffic ("overtook a slow-moving bus"), one that does something to another road user, one the ego
 follows or passes, one named in a group or picked out of one, parked, standing or hiding someone. A
 text that calls the ego "the ego" has said which one it is, and no vehicle is taken for it. A
@@ -42,8 +44,12 @@ from typing import Protocol
 
 from vei_scenario.language.clauses import sentence_stop
 from vei_scenario.language.discourse import FIRST_PERSON, PERCEIVE
+from vei_scenario.language.lane_to_front import lane_beside_after
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.manner import BREAKS
+from vei_scenario.language.narrator_vehicle import TEST_OBJECTS
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
+from vei_scenario.language.vocabulary import IN_LINE
 
 #: What the ego itself does in a story told from it: goes on, slows, brakes (to a stop).
 EGO_LIKE = frozenset(("keep_going", "sudden_stop", "stop", "change_speed"))
@@ -185,7 +191,12 @@ def stops_when_someone_comes(a: _Said, others: list, specs: list, tokens: list[s
     and gets into its path ("the van stopped when a boy stepped out on the left", "the vehicle shall
     stop when a pedestrian steps out"): the stop is for that one, though named after it, as the ego
     stops in the story told from it. ``others`` are the road users gathered (``a`` among them), in
-    the order of ``specs``; ``tokens`` the scanned words their names end in."""
+    the order of ``specs``; ``tokens`` the scanned words their names end in. Only where no one tells
+    the story in the first person (no "I" or "we", not even of a writer read as outside the scene: a
+    narrator is the ego, and the one they stop behind, overtake or meet is someone else), and not one
+    the words set apart (:func:`_set_apart`)."""
+    if FIRST_PERSON & set(tokens) or _set_apart(a, others, tokens):
+        return False
     after = [(x.named_end, s) for x, s in zip(others, specs) if x.named_end > a.named_end >= 0]
     if not after:
         return False
@@ -194,16 +205,30 @@ def stops_when_someone_comes(a: _Said, others: list, specs: list, tokens: list[s
     at = max((k for k, w in enumerate(between) if w in WHEN), default=None)
     if at is None or sentence_stop(between, 0) < len(between) or len(between) - at > _SUBJECT_WORDS:
         return False  # (its subject comes right after the subordinator: "when a boy", "as the cyclist")
+    if at and between[at - 1] in BREAKS:
+        return False  # ("came to a stop, and when a kid ran out I braked": it times another clause)
     return any(b[0] in IN_THE_PATH for b in nxt.behaviours)
 
 
-def _double(
-    a: _Said, spec: ActorSpec, others: list, unnamed: bool = False, specs: list = (), tokens: list[str] = ()
-) -> bool:
+def _set_apart(a: _Said, others: list, tokens: list[str]) -> bool:
+    """Whether the words set road user ``a`` apart from the ego: named as a test's object or by its
+    place in a line ("the target vehicle", "the lead car", "the other car"), set in a lane beside
+    another right after its name ("the car in the other lane"), or with a road user named after it said
+    to be behind or ahead of "it" ("the cyclist behind it swerved": one behind another, not the ego)."""
+    words = {a.named_after, *a.word.split()[:-1]}
+    if words & (_SOMEONE_ELSE | TEST_OBJECTS | IN_LINE):
+        return True
+    if a.named_end >= 0 and lane_beside_after(tokens, a.named_end) is not None:
+        return True
+    return any("near_other" in x.said for x in others if x.named_end > a.named_end)
+
+
+def _double(a: _Said, spec: ActorSpec, others: list, specs: list, tokens: list[str], new_too: bool = False) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is read as the ego would be: a kind the ego may
     be, nowhere said, moving at a speed of its own or none said (not standing, not "slow-moving"),
     doing only what the ego does (only stopping where another of ``specs`` gets into its path), and
-    nothing to another road user (none is its verb's object)."""
+    nothing to another road user (none is its verb's object). ``tokens`` as :func:`merge_into_ego`
+    takes them; ``new_too``: one brought in as new with a speed may be it (a text naming no ego)."""
     names = {b[0] for b in spec.behaviours}
     return (
         spec.kind in _EGO_KINDS
@@ -215,16 +240,16 @@ def _double(
             names != {"stop"}
             or spec.speed_mps is None
             and not a.stationary
-            and (stops_for_someone(spec, specs) or stops_when_someone_comes(a, others, specs, list(tokens)))
+            and (stops_for_someone(spec, specs) or stops_when_someone_comes(a, others, specs, tokens))
         )
         and not _placed(a)
-        and (a.det not in NEW or (unnamed and spec.speed_mps is not None))
+        and (a.det not in NEW or (new_too and spec.speed_mps is not None))
         and not a.seen
         and not any(x.object_of is a for x in others)
     )
 
 
-def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False, tokens: list[str] = ()) -> list:
+def merge_into_ego(actors: list, reading: Reading, unnamed: bool, tokens: list[str]) -> list:
     """Take the one road user of ``reading`` that is the ego said again (see the module) out of its
     road users; ``actors`` are what the reader gathered of them, in the same order. Its speed becomes
     the ego's where the ego has none, and a gap said of it is the gap to the one road user it meets
@@ -233,9 +258,10 @@ def merge_into_ego(actors: list, reading: Reading, unnamed: bool = False, tokens
     ``tokens``: the scanned words the road users' names end in (for a stop told with "when").
     Returns ``actors`` without it."""
     specs = reading.actors
-    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs=specs, tokens=tokens)]
+    tokens = list(tokens)
+    doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens)]
     if not doubles and unnamed:  # (one not new is the ego before any brought in as new)
-        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, unnamed, specs, tokens)]
+        doubles = [k for k, (a, s) in enumerate(zip(actors, specs)) if _double(a, s, actors, specs, tokens, True)]
     deeds = [  # (a parked lorry does nothing the ego meets: "a van hit my dad" beside it is no report of the van)
         s
         for a, s in zip(actors, specs)

@@ -82,7 +82,7 @@ def _a_move_between(tokens: list[str], start: int, end: int) -> bool:
     return any(v and not lemmas(w).get("AUX") and not lemmas(w).get("ADV") for v, w in zip(verbs, words, strict=True))
 
 
-def _lane_beside_after(tokens: list[str], i: int) -> int | None:
+def lane_beside_after(tokens: list[str], i: int) -> int | None:
     """Where a lane beside the ego's with no side said ("in the next lane", "from the adjacent lane",
     "out of the other lane") ends, when one is said from token ``i``; None where none is."""
     j = i
@@ -117,7 +117,7 @@ def _lane_end(mentions: list, tokens: list[str], k: int) -> tuple[int, int] | No
     nxt = mentions[k + 1] if k + 1 < len(mentions) else None
     if nxt is not None and (nxt.slot == "lane_side" or _beside_the_ego(nxt)) and nxt.value in _SIDES:
         return k + 2, nxt.end
-    end = _lane_beside_after(tokens, mentions[k].end)
+    end = lane_beside_after(tokens, mentions[k].end)
     if end is None:
         return None
     j = k + 1

@@ -791,6 +791,8 @@ BEHAVIOUR_VERBS = {
         "creep along",
         "dawdle along",
         "close in",
+        "have right of way",  # (the priority it has is to go on: "the cyclist had right of way and I stopped")
+        "have the right of way",
     ),
     "keep_lane": (
         "keep its lane",
