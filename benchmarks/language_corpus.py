@@ -83,6 +83,8 @@ FIRST = {
     "language_independent_z30.json": ((50, 49, 3, 46), "sealed for a round of reader work"),
     "language_independent_z31.json": ((50, 50, 11, 45), "sealed for a round of reader work"),
     "language_independent_z32.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
+    "language_independent_z33.json": ((50, 50, 12, 48), "sealed for a round of reader work"),
+    "language_independent_z34.json": ((50, 50, 2, 44), "sealed for a round of reader work"),
 }
 
 

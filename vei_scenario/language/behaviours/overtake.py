@@ -55,17 +55,23 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
 
 #: How far behind the ego (m) an overtaker at the ego's speed starts, beyond half their lengths.
 BEHIND_M = 15.0
+#: The ego's speed (m/s) at or below which it stands, so that a road user filters past it from far back.
+STANDING_MPS = 0.5
 #: How much nearer than level with the ego (m) an overtaker coming up faster is out in the next lane.
 OUT_BEFORE_LEVEL_M = 5.0
 
 
 def place(ego_speed: float, lengths_m: float, cfg: dict, speed: float | None = None) -> tuple[float, float]:
     """(spawn longitudinal_m, speed_mps): behind the ego, at its speed until it pulls out; one that
-    comes up faster from the start (``speed``: a rider filtering past a queue that stands) starts
-    as far back as it closes in while it waits and pulls out, and a little more. Why: the pass is
+    comes up past an ego that stands (``speed``: a rider filtering past a queue at the lights) starts
+    as far back as it closes in while it waits and pulls out, and a little more. (Past a moving ego the
+    pass is timed from behind it and needs no more room: starting further back there leaves a fast
+    overtaker short of the ego when the scenario ends.) Why: the pass is
     timed from level with the ego (its free-space gap zero) once the pull-out is over; one that
     drew level during it would run into the ego's tail, or be past before the pass began, and
     never cut back in nor do what follows."""
+    if ego_speed > STANDING_MPS:
+        return -(lengths_m / 2 + BEHIND_M), ego_speed
     closing = max((speed if speed is not None else ego_speed) - ego_speed, 0.0)
     out_s = value(cfg, PARAMETERS, "delay_s") + value(cfg, PARAMETERS, "lane_change_s")
     return -(lengths_m / 2 + max(BEHIND_M, closing * out_s + OUT_BEFORE_LEVEL_M)), ego_speed
