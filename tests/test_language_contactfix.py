@@ -23,6 +23,15 @@ def _intent(text: str) -> str | None:
     return layers_from_text(text, 0).get("intent")
 
 
+def _reads(text: str, intent: str | None) -> None:
+    """``text`` reads as ``intent``; with None, as anything but a collision."""
+    got = _intent(text)
+    if intent is None:
+        assert got != "collision"
+    else:
+        assert got == intent
+
+
 @pytest.mark.parametrize(
     ("text", "intent"),
     [
@@ -43,11 +52,7 @@ def _intent(text: str) -> str | None:
     ],
 )
 def test_a_knock_located_elsewhere_or_outranked_is_no_collision(text: str, intent: str | None) -> None:
-    got = _intent(text)
-    if intent is None:
-        assert got != "collision"
-    else:
-        assert got == intent
+    _reads(text, intent)
 
 
 @pytest.mark.parametrize(
@@ -80,11 +85,7 @@ def test_a_light_knock_on_the_vehicle_stays_a_collision(text: str) -> None:
     ],
 )
 def test_a_line_of_things_is_met_a_painted_line_is_not(text: str, intent: str | None) -> None:
-    got = _intent(text)
-    if intent is None:
-        assert got != "collision"
-    else:
-        assert got == intent
+    _reads(text, intent)
 
 
 @pytest.mark.parametrize(
@@ -135,8 +136,4 @@ def test_came_out_right_under_my_bonnet_is_a_near_miss(text: str) -> None:
     ],
 )
 def test_my_corner_of_a_place_is_no_part(text: str, intent: str | None) -> None:
-    got = _intent(text)
-    if intent is None:
-        assert got != "collision"
-    else:
-        assert got == intent
+    _reads(text, intent)
