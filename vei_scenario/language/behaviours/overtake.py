@@ -62,14 +62,15 @@ OUT_BEFORE_LEVEL_M = 5.0
 
 
 def place(ego_speed: float, lengths_m: float, cfg: dict, speed: float | None = None) -> tuple[float, float]:
-    """(spawn longitudinal_m, speed_mps): behind the ego, at its speed until it pulls out; one that
-    comes up past an ego that stands (``speed``: a rider filtering past a queue at the lights) starts
-    as far back as it closes in while it waits and pulls out, and a little more. (Past a moving ego the
-    pass is timed from behind it and needs no more room: starting further back there leaves a fast
-    overtaker short of the ego when the scenario ends.) Why: the pass is
-    timed from level with the ego (its free-space gap zero) once the pull-out is over; one that
-    drew level during it would run into the ego's tail, or be past before the pass began, and
-    never cut back in nor do what follows."""
+    """(spawn longitudinal_m, speed_mps): behind the ego, at its speed until it pulls out.
+
+    One that comes up past an ego that stands (``speed``: a rider filtering past a queue at the
+    lights) starts as far back as it closes in while it waits and pulls out, and a little more: the
+    pass is timed from level with the ego (its free-space gap zero) once the pull-out is over, and one
+    that drew level during it would run into the ego's tail, or be past before the pass began, and
+    never cut back in nor do what follows. Past a moving ego the pass is timed from behind it and
+    needs no more room; starting a fast overtaker further back there leaves it short of the ego when
+    the scenario ends."""
     if ego_speed > STANDING_MPS:
         return -(lengths_m / 2 + BEHIND_M), ego_speed
     closing = max((speed if speed is not None else ego_speed) - ego_speed, 0.0)
