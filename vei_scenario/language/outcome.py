@@ -45,9 +45,9 @@ from vei_scenario.language.who import TOWED
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
 
-#: What ends a clause, and with it the scope of a negation or a hedge.
+#: What ends a clause, and with it the scope of a negation or a hedge: these marks and the words of
+#: :data:`function_words.CLAUSE_BREAKS`.
 _BREAK_PUNCT = frozenset(".;!?:,")
-_BREAK_WORDS = CLAUSE_BREAKS
 #: Negators: they deny what follows them in their clause.
 _NEGATORS = frozenset(("no", "not", "never", "without", "nobody", "nothing", "neither", "nor", "none", "cannot"))
 #: Verbs (lemmas) whose object is denied: "avoided contact", "prevents a collision".
@@ -99,8 +99,6 @@ _PLACES = frozenset(
      "arm", "spot", "skid", "spin", "park", "lot", "entrance", "carpark", "turn", "area", "zone", "middle", "centre",
      "place")
 )  # fmt: skip
-#: Words that end an object's noun phrase ("into the pallets lying in the lane": "the pallets").
-_PHRASE_ENDS = PHRASE_ENDS
 #: The parts of a road user one runs into.
 _PARTS = frozenset(("side", "back", "rear", "front", "wing", "door", "trailer", "bumper", "tail", "bonnet", "boot"))
 #: Words that end a small margin: units of length and the idioms of a hair's width.
@@ -215,7 +213,7 @@ def _clauses(tokens: list[str]) -> list[_Clause]:
     or "unless" in its sentence is marked ``after_if``."""
     out: list[_Clause] = []
     condition = False
-    for words, first in split(tokens, _BREAK_PUNCT | _BREAK_WORDS):
+    for words, first in split(tokens, _BREAK_PUNCT | CLAUSE_BREAKS):
         condition = condition and not first  # (a condition holds to the end of its sentence)
         out.append(_Clause(words, first, after_if=condition))
         condition = condition or bool({"if", "unless"} & set(words))
@@ -422,7 +420,7 @@ def names_a_thing(phrase: list[str], named: frozenset[str] = frozenset()) -> boo
         if w in ("'s", "s"):
             head = None  # ("my client's vehicle": the possessor's noun is no head; what it has follows)
             continue
-        if ("NOUN" not in found and "ADJ" not in found) or w in _BREAK_WORDS or w in _PHRASE_ENDS:
+        if ("NOUN" not in found and "ADJ" not in found) or w in CLAUSE_BREAKS or w in PHRASE_ENDS:
             break
         if w in named or w in _PUSHED or _road_user_word(w) or w in _PERSON_OBJECTS:
             return False  # ("I hit the Golf" after "a Golf pulled out": one of the story's road users)
@@ -735,7 +733,7 @@ def _under_road_user(obj: list[str]) -> bool:
     """Whether the noun phrase after "under the" is a vehicle's part or a road user ("the nearside
     front", "the wheels of the bus"), not a place ("the railway bridge")."""
     for w in obj:
-        if w in _PHRASE_ENDS:
+        if w in PHRASE_ENDS:
             return False
         if w in _VEHICLE_PARTS or w.rstrip("s") in _VEHICLE_PARTS or _road_user_word(w):
             return True
@@ -754,7 +752,7 @@ def _thing_subject(words: list[str], i: int) -> bool:
                 _road_user_word(x) or x in _EGO_HEADS or x in _PERSON_OBJECTS or x.rstrip("s") in _VEHICLE_PARTS
                 for x in phrase
             )
-        if words[k] in _BREAK_WORDS or words[k] in _PHRASE_ENDS or words[k] in _VERBAL_BEFORE:
+        if words[k] in CLAUSE_BREAKS or words[k] in PHRASE_ENDS or words[k] in _VERBAL_BEFORE:
             return False
     phrase = words[max(0, i - 4) : i]  # (a bare noun opening its clause: "app crashed twice")
     return 0 < i <= 2 and all(
@@ -811,7 +809,7 @@ def _counted(words: list[str], i: int) -> bool:
         value = _number(words[k])
         if value is not None:
             return value >= 2.0 and (bool(set(words) & _RECORDED) or not any(map(_past_verb, words[i + 1 :])))
-        if words[k] in _PHRASE_ENDS or words[k] in _BREAK_WORDS or words[k] in _NEGATORS:
+        if words[k] in PHRASE_ENDS or words[k] in CLAUSE_BREAKS or words[k] in _NEGATORS:
             return False
     return False
 
@@ -870,7 +868,7 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return not (obj[1:2] and obj[1] in _PLACES)  # ("into my car" read as "into ego"; not "into ego lane")
     chunk: list[str] = []
     for w in obj:
-        if w in _PHRASE_ENDS:
+        if w in PHRASE_ENDS:
             break
         chunk.append(w)
     if not chunk or (set(chunk) & _PLACES and not _owned_part(chunk, words[j + 1 + len(chunk) :])):
@@ -894,7 +892,7 @@ def _owned_part(chunk: list[str], rest: list[str]) -> bool:
     if chunk[-1] not in _VEHICLE_PARTS or set(chunk[:-1]) & _PLACES:
         return False
     owner = [w for w in rest[1:5] if w not in _DETERMINERS and w not in _POSSESSIVES]
-    head = next((k for k, w in enumerate(owner) if w in _PHRASE_ENDS or w in _BREAK_WORDS), len(owner))
+    head = next((k for k, w in enumerate(owner) if w in PHRASE_ENDS or w in CLAUSE_BREAKS), len(owner))
     if chunk[0] in _POSSESSIVES:  # (not the writer's share of a place: "into my corner of the junction")
         return not (rest[:1] == ["of"] and head > 0 and owner[head - 1] in _PLACES | _ENTERED)
     if rest[:1] != ["of"]:
@@ -1009,7 +1007,7 @@ def names_road_user(obj: list[str]) -> bool:
             return True
         if _road_user_word(w):
             return True
-        if w in _PHRASE_ENDS or w in _BREAK_WORDS:
+        if w in PHRASE_ENDS or w in CLAUSE_BREAKS:
             return False
     return False
 
@@ -1025,7 +1023,7 @@ def _vehicle_part(after: list[str]) -> bool:
     for w in after[1:reach]:
         if w in _VEHICLE_PARTS or w.rstrip("s") in _VEHICLE_PARTS:
             return True
-        if w in _PHRASE_ENDS:
+        if w in PHRASE_ENDS:
             return False
     return False
 
@@ -1122,7 +1120,7 @@ def _lets_do(words: list[str], i: int) -> bool:
             continue
         if w in _pos(w).get("VERB", ()):
             return True  # (its bare form: "finish", "clear", "complete")
-        if "VERB" in _pos(w) or w in _PHRASE_ENDS:
+        if "VERB" in _pos(w) or w in PHRASE_ENDS:
             return False  # (an inflected verb or a preposition: no object and bare verb)
     return False
 
@@ -1374,7 +1372,7 @@ def _short_of_a_marking(words: list[str], i: int) -> bool:
         return False
     phrase = []
     for w in words[i + 2 :]:
-        if w in _PHRASE_ENDS:
+        if w in PHRASE_ENDS:
             break
         phrase.append(w)
     counted = words[i + 2 + len(phrase) : i + 3 + len(phrase)] == ["of"]
@@ -1606,7 +1604,7 @@ def _relative_to_other(words: list[str], k: int) -> bool:
         return False
     after = words[k + 1 : k + 5]
     if not after or after[0] != "of":
-        return not after or after[0] in _BREAK_WORDS or after[0] in _PHRASE_ENDS - {"of"}
+        return not after or after[0] in CLAUSE_BREAKS or after[0] in PHRASE_ENDS - {"of"}
     obj = after[1:]  # (or a part of one: "3 m ahead of the front bumper", "in front of my bonnet")
     return bool(obj) and (obj[0] in _PERSON_OBJECTS | _EGO_HEADS or names_road_user(obj) or _vehicle_part(obj))
 
