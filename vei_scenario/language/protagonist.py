@@ -19,11 +19,15 @@ ego's speed.
 The motor vehicle with the most of these, one of them a speed or a reaction, is the ego when no
 other motor vehicle has as many and no walker or rider has more, or as many and is named first (a
 rider with a speed of their own, overtaken by a car that has none, is the one the text is told from,
-not the car). A report's bare "driver" ("Driver braked hard", "The driver stopped") is the driver of
-the vehicle introduced as known (a field value, "the") or of the only motor vehicle named; with no
-such vehicle it is the ego on its own. A parked or placed vehicle ("a parked van", "the car ahead")
-is never the ego. The word classes here are small and closed (verbs of reacting, nouns of a
-vehicle's sides); which words name road users comes from the reader's lexicon.
+not the car). Two that tie are told apart only where one reacts and the other is named only as the
+side the first came from or stopped short of ("A black SUV ran the red. A taxi, which was
+approaching from the SUV's right, braked to a halt"): whose side the taxi came from says nothing of
+whom the story is told from, and its braking for the one that crossed its way does.
+A report's bare "driver" ("Driver braked hard", "The driver stopped") is the driver of the vehicle
+introduced as known (a field value, "the") or of the only motor vehicle named; with no such vehicle
+it is the ego on its own. A parked or placed vehicle ("a parked van", "the car ahead") is never the
+ego. The word classes here are small and closed (verbs of reacting, nouns of a vehicle's sides);
+which words name road users comes from the reader's lexicon.
 """
 
 from __future__ import annotations
@@ -84,6 +88,10 @@ class _Referent:
     placed_by: bool = False
     struck: bool = False  # the subject of a passive of contact: "was struck by", "got rear-ended"
     known: bool = False  # introduced as known: bare ("Cab 22") or with "the"
+    #: Placed by only as where another came from ("approaching from the SUV's right"), never as a path,
+    #: front or lane another got into: see :func:`_reactor_among`.
+    origin_only: bool = True
+    brakes: bool = False  # the subject of a verb of reacting, whoever came before it ("A bus braked hard")
 
     @property
     def score(self) -> int:
@@ -176,6 +184,35 @@ def _placed_by(tokens: list[str], p) -> bool:
     return tokens[p.end : p.end + 1] == ["'s"]
 
 
+def _origin_of_another(tokens: list[str], p) -> bool:
+    """The mention places another road user only as where that one came from or stopped: "from the
+    SUV's right", "from the van's nearside", "just short of the bus's door" (a possessive right after
+    "from" or "short of" and its article). That says which way the other approached, or how near it
+    came, not that anyone got into this one's path, front or lane."""
+    k = p.start - 1
+    while k >= 0 and tokens[k] in DEFINITE:
+        k -= 1
+    if tokens[p.end : p.end + 1] != ["'s"] or k < 0:
+        return False
+    return tokens[k] == "from" or (tokens[k] == "of" and k >= 1 and tokens[k - 1] == "short")
+
+
+def _reactor_among(tied: list[_Referent]) -> _Referent | None:
+    """Of motor vehicles ``tied`` on evidence, the one the story happens to, where that can be told:
+    the only one that reacts (brakes, stops, swerves) while each other is placed by only as where
+    someone came from ("a taxi, approaching from the SUV's right, braked to a halt") and has no
+    speed, braking or blow of its own. A road user's approach named by another's side says nothing
+    of whom the story is told from; a reaction to the one that crossed its way does. Else None (two
+    that brake, or a path, front or lane said of one, stay a tie)."""
+    reacting = [r for r in tied if r.reacts]
+    if len(reacting) != 1:
+        return None
+    others = [r for r in tied if r is not reacting[0]]
+    if all(r.placed_by and r.origin_only and not (r.speed or r.brakes or r.struck) for r in others):
+        return reacting[0]
+    return None
+
+
 def _placed_by_unsaid(tokens: list[str], p, nxt: int) -> bool:
     """The mention is placed by someone the text leaves unsaid: a word of place in it ("a lead van")
     or in its clause with no one after it ("brakes hard 20 m ahead", "is coming up behind")."""
@@ -208,8 +245,8 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
         words = [w for w in tokens[p.head : p.end] if w.isalpha()]
         last = tokens[p.end - 1]
         if last in AT_WHEEL and p.end - p.head == 1 and p.det in ("", "the") and p.kind in vehicles:
-            if tokens[p.end : p.end + 1] == ["of"]:
-                continue  # ("the driver of the Yaris": the Yaris, read at its own mention)
+            if tokens[p.end : p.end + 1] == ["of"] or tokens[p.start - 1 : p.start] == ["'s"]:
+                continue  # ("the driver of the Yaris", "the SUV's driver": the Yaris, the SUV, read at their own)
             driver = driver or _Referent("driver", known=True)
             driver.mentions.append(p)
             continue
@@ -246,12 +283,15 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
     for p in r.mentions:
         nxt = next((q.start for q in users if q.start >= p.end), len(tokens))
         of = p.start >= 2 and tokens[p.start - 1] == "of" and tokens[p.start - 2] == "driver"
-        r.speed |= _has_speed(tokens, p, nxt)
+        r.speed |= not _origin_of_another(tokens, p) and _has_speed(tokens, p, nxt)  # (not "from the SUV's left at 20")
         s = p.start
         while s > 0 and tokens[s - 1] not in (".", ";", "!", "?"):
             s -= 1
         r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
-        r.placed_by |= not of and _placed_by(tokens, p)
+        r.brakes |= bool(_verb_of_reacting(tokens, _past_aside(tokens, p.end)))
+        placed = not of and _placed_by(tokens, p)
+        r.placed_by |= placed
+        r.origin_only &= not placed or _origin_of_another(tokens, p)
         r.struck |= not of and _struck(tokens, p)
 
 
@@ -324,7 +364,12 @@ def frame(tokens: list[str], kind_at, known, dropped: list[str]) -> list[str]:
     if not motor:
         return tokens
     best = max(motor, key=lambda r: r.score)
-    if best.score < 1 or sum(r.score == best.score for r in motor) > 1:
+    tied = [r for r in motor if r.score == best.score]
+    if len(tied) > 1:  # (a tie, unless one reacts to another's approach)
+        best = _reactor_among(tied)
+        if best is None:
+            return tokens
+    if best.score < 1:
         return tokens
     first = min(p.start for p in best.mentions)
     if any((r.score, first) > (best.score, r.mentions[0].start) for r in referents if r.kind not in VEHICLES):

@@ -826,6 +826,10 @@ _MOTION_BEFORE_SPEED = frozenset(
 )
 
 
+#: The side a road user is on, seen from one that came from its other side.
+_OTHER_SIDE = {"left": "right", "right": "left"}
+
+
 def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, list[str]]:
     """(clauses as (link, mentions), ignored words, words read as others, the tokens the mentions
     index) of ``text``; a word that is only a verb and unknown stays in its clause as an
@@ -2472,6 +2476,9 @@ def _read(text: str) -> Reading:
                 who = _nearest(named, m)
                 if sides.owners_side(m, prev) and isinstance(clause_subject, _Actor) and who is not clause_subject:
                     who = clause_subject  # ("a van came from the Civic's right": the van's side, not the Civic's)
+                elif sides.owners_side(m, prev) and clause_subject == "ego" and m.value in _OTHER_SIDE:
+                    # ("the ego came from the SUV's right": the SUV is on the ego's left)
+                    m = replace(m, value=_OTHER_SIDE[m.value])
                 if (
                     m.slot == "relation"
                     and isinstance(clause_subject, _Actor)
