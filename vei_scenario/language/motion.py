@@ -2516,15 +2516,20 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     in front of it, a road user goes across where the ego is heading. How near it came may stand
     between ("passed approx 2 m in front of us"). A verb + "past" has the ego's front as the
     particle's object ("went right past our bonnet"): it went by across the front, not along a side
-    (a vehicle with no junction said: a cut across, see :func:`_past_the_front`)."""
+    (a vehicle with no junction said: a cut across, see :func:`_past_the_front`). The ego may go
+    unsaid where the story is its own: "passed across in front of" it, a walker's or rider's "passed
+    in front" with no "of" ("... with a metre to spare") and "past the front" with no owner are
+    across its front too, and so is a walker's or rider's pass after the ego stopped for it (read as
+    going on by :func:`passes_while_the_ego_yields`): it went by in front of the ego, across its way."""
     out = []
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
-            if passes(m) and m.words.split()[-1] == "past" and _close_by_the_egos_front(tokens, m.end - 1):
+            front = _close_by_the_egos_front(tokens, m.end - 1) or _past_the_front_unsaid(kept[:k], tokens, m.end - 1)
+            if passes(m) and m.words.split()[-1] == "past" and front:
                 kept[k] = replace(m, value=(_past_the_front(kept[:k], clauses), {}))  # ("went right past our bonnet")
                 continue
-            if not passes(m) or len(m.words.split()) != 1:
+            if not (passes(m) or _let_by(m, kept[:k])) or len(m.words.split()) != 1:
                 continue
             j = m.end
             while j < len(tokens) and (tokens[j] in _CLOSE | _HOW_NEAR or tokens[j].replace(".", "").isdigit()):
@@ -2535,6 +2540,12 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if _across_the_ego(tokens, j) or (not overtakes_too and _close_by_the_egos_front(tokens, j)):
                 kept[k] = replace(m, value=("cross_in_front", {}))
                 continue
+            if tokens[j : j + 1] == ["across"] and _in_front_of_the_ego(tokens, j + 1):
+                kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed across in front of the car")
+                continue
+            if tokens[j : j + 2] == ["in", "front"] and not overtakes_too and _front_unsaid(kept[:k], tokens, j + 2):
+                kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed in front with a metre to spare")
+                continue
             if tokens[j : j + 3] != ["in", "front", "of"]:
                 continue
             rest = tokens[j + 3 : j + 7]
@@ -2544,6 +2555,42 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out
+
+
+#: Words after "in front" that end where the pass goes: the front is then the ego's, left unsaid
+#: ("passed in front with a metre to spare", "passed right in front, missing my bumper").
+_FRONT_ENDS = frozenset((",", ".", ";", "!", "?", "with", "and", "by", "then", "at", "missing", "-"))
+
+
+def _front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+    """Whether "in front" ends at ``tokens[j]`` with no "of" (the ego's front, told by the one whose
+    story it is), said of a walker or rider (``before``: its clause's mentions before the verb). A
+    vehicle that passes in front with no one named may be pulling in ahead of the ego; a walker or
+    rider is going across its front."""
+    subject = _subject_before(before)
+    walker = subject is not None and subject.slot == "actor" and subject.value in _CROSSERS
+    return walker and (j >= len(tokens) or tokens[j] in _FRONT_ENDS)
+
+
+def _past_the_front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+    """Whether "past the front" is said at ``tokens[j]`` with no owner ("went past the front a metre
+    off the bumper") of a road user that is no vehicle (``before``: its clause's mentions before the
+    verb): the front of the one whose story it is, the ego's."""
+    subject = _subject_before(before)
+    if subject is not None and subject.slot == "actor" and subject.value in VEHICLES:
+        return False
+    return tokens[j : j + 3] == ["past", "the", "front"] and tokens[j + 3 : j + 4] != ["of"]
+
+
+def _let_by(m, before: list) -> bool:
+    """Whether ``m`` is a walker's or rider's pass read as going on through where the ego held back
+    (:func:`passes_while_the_ego_yields`): where it passes, in front of the ego, is read as for any pass."""
+    if m.slot != "behaviour" or m.value[0] != "keep_going" or "_has_way" not in m.value[1]:
+        return False
+    subject = _subject_before(before)
+    said = m.words.split()
+    passing = len(said) == 1 and "pass" in lemmas(said[0]).get("VERB", ())
+    return passing and subject is not None and subject.slot == "actor" and subject.value in _CROSSERS
 
 
 def _past_the_front(before: list, clauses: list) -> str:
