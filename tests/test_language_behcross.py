@@ -24,7 +24,7 @@ CROSSES = [
     ("I was turning left and braked as the cyclist passed across in front of the car.", "bicycle"),
     ("We slowed right down and a jogger passed across in front of our van.", "pedestrian"),
     # in front, the ego left unsaid
-    ("I stopped and the e-scooter passed in front with a metre to spare.", "e-scooter"),
+    ("I braked hard as the e-scooter passed in front with a metre to spare.", "e-scooter"),
     ("The bus braked hard; the scooter rider passed right in front with about a metre of clearance.", "e-scooter"),
     # past the front, no owner said
     ("A boy on a bike came out of a drive, I braked and he went past the front a metre off the bumper.", "bicycle"),

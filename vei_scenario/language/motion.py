@@ -2519,9 +2519,9 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     (a vehicle with no junction said: a cut across, see :func:`_past_the_front`). The ego may go
     unsaid where the story is its own: "passed across in front of" it, a walker's or rider's "passed
     in front" with no "of" ("... with a metre to spare") and "past the front" with no owner are
-    across its front too, and so is a walker's or rider's pass after the ego stopped for it (read as
-    going on by :func:`passes_while_the_ego_yields`): it went by in front of the ego, across its way."""
+    across its front too (not one said to come from behind, which overtakes)."""
     out = []
+    from_behind = _said_from_behind(clauses)
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
@@ -2529,7 +2529,7 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if passes(m) and m.words.split()[-1] == "past" and front:
                 kept[k] = replace(m, value=(_past_the_front(kept[:k], clauses), {}))  # ("went right past our bonnet")
                 continue
-            if not (passes(m) or _let_by(m, kept[:k])) or len(m.words.split()) != 1:
+            if not passes(m) or len(m.words.split()) != 1:
                 continue
             j = m.end
             while j < len(tokens) and (tokens[j] in _CLOSE | _HOW_NEAR or tokens[j].replace(".", "").isdigit()):
@@ -2543,7 +2543,8 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if tokens[j : j + 1] == ["across"] and _in_front_of_the_ego(tokens, j + 1):
                 kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed across in front of the car")
                 continue
-            if tokens[j : j + 2] == ["in", "front"] and not overtakes_too and _front_unsaid(kept[:k], tokens, j + 2):
+            unsaid = _front_unsaid(kept[:k], tokens, j + 2) and _subject_before(kept[:k]).value not in from_behind
+            if tokens[j : j + 2] == ["in", "front"] and not overtakes_too and unsaid:
                 kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed in front with a metre to spare")
                 continue
             if tokens[j : j + 3] != ["in", "front", "of"]:
@@ -2582,15 +2583,17 @@ def _past_the_front_unsaid(before: list, tokens: list[str], j: int) -> bool:
     return tokens[j : j + 3] == ["past", "the", "front"] and tokens[j + 3 : j + 4] != ["of"]
 
 
-def _let_by(m, before: list) -> bool:
-    """Whether ``m`` is a walker's or rider's pass read as going on through where the ego held back
-    (:func:`passes_while_the_ego_yields`): where it passes, in front of the ego, is read as for any pass."""
-    if m.slot != "behaviour" or m.value[0] != "keep_going" or "_has_way" not in m.value[1]:
-        return False
-    subject = _subject_before(before)
-    said = m.words.split()
-    passing = len(said) == 1 and "pass" in lemmas(said[0]).get("VERB", ())
-    return passing and subject is not None and subject.slot == "actor" and subject.value in _CROSSERS
+def _said_from_behind(clauses: list) -> set:
+    """The kinds of road user said to come "from behind" the ego (a ``behind`` relation right after
+    its noun and verb): one that then passes in front, the ego left unsaid, is overtaking it."""
+    kinds = set()
+    for _, mentions in clauses:
+        for k, m in enumerate(mentions):
+            if m.slot == "relation" and m.value == "behind":
+                subject = _subject_before(mentions[:k])
+                if subject is not None and subject.slot == "actor":
+                    kinds.add(subject.value)
+    return kinds
 
 
 def _past_the_front(before: list, clauses: list) -> str:
