@@ -2516,12 +2516,17 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     in front of it, a road user goes across where the ego is heading. How near it came may stand
     between ("passed approx 2 m in front of us"). A verb + "past" has the ego's front as the
     particle's object ("went right past our bonnet"): it went by across the front, not along a side
-    (a vehicle with no junction said: a cut across, see :func:`_past_the_front`)."""
+    (a vehicle with no junction said: a cut across, see :func:`_past_the_front`). The ego may go
+    unsaid where the story is its own: "passed across in front of" it, a walker's or rider's "passed
+    in front" with no "of" ("... with a metre to spare") and "past the front" with no owner are
+    across its front too (not one said to come from behind, which overtakes)."""
     out = []
+    from_behind = _said_from_behind(clauses)
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
-            if passes(m) and m.words.split()[-1] == "past" and _close_by_the_egos_front(tokens, m.end - 1):
+            front = _close_by_the_egos_front(tokens, m.end - 1) or _past_the_front_unsaid(kept[:k], tokens, m.end - 1)
+            if passes(m) and m.words.split()[-1] == "past" and front:
                 kept[k] = replace(m, value=(_past_the_front(kept[:k], clauses), {}))  # ("went right past our bonnet")
                 continue
             if not passes(m) or len(m.words.split()) != 1:
@@ -2535,6 +2540,13 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if _across_the_ego(tokens, j) or (not overtakes_too and _close_by_the_egos_front(tokens, j)):
                 kept[k] = replace(m, value=("cross_in_front", {}))
                 continue
+            if tokens[j : j + 1] == ["across"] and _in_front_of_the_ego(tokens, j + 1):
+                kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed across in front of the car")
+                continue
+            unsaid = _front_unsaid(kept[:k], tokens, j + 2) and _subject_before(kept[:k]).value not in from_behind
+            if tokens[j : j + 2] == ["in", "front"] and not overtakes_too and unsaid:
+                kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed in front with a metre to spare")
+                continue
             if tokens[j : j + 3] != ["in", "front", "of"]:
                 continue
             rest = tokens[j + 3 : j + 7]
@@ -2544,6 +2556,44 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
                 kept[k] = replace(m, value=("cross_in_front", {}))
         out.append((link, kept))
     return out
+
+
+#: Words after "in front" that end where the pass goes: the front is then the ego's, left unsaid
+#: ("passed in front with a metre to spare", "passed right in front, missing my bumper").
+_FRONT_ENDS = frozenset((",", ".", ";", "!", "?", "with", "and", "by", "then", "at", "missing", "-"))
+
+
+def _front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+    """Whether "in front" ends at ``tokens[j]`` with no "of" (the ego's front, told by the one whose
+    story it is), said of a walker or rider (``before``: its clause's mentions before the verb). A
+    vehicle that passes in front with no one named may be pulling in ahead of the ego; a walker or
+    rider is going across its front."""
+    subject = _subject_before(before)
+    walker = subject is not None and subject.slot == "actor" and subject.value in _CROSSERS
+    return walker and (j >= len(tokens) or tokens[j] in _FRONT_ENDS)
+
+
+def _past_the_front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+    """Whether "past the front" is said at ``tokens[j]`` with no owner ("went past the front a metre
+    off the bumper") of a road user that is no vehicle (``before``: its clause's mentions before the
+    verb): the front of the one whose story it is, the ego's."""
+    subject = _subject_before(before)
+    if subject is not None and subject.slot == "actor" and subject.value in VEHICLES:
+        return False
+    return tokens[j : j + 3] == ["past", "the", "front"] and tokens[j + 3 : j + 4] != ["of"]
+
+
+def _said_from_behind(clauses: list) -> set:
+    """The kinds of road user said to come "from behind" the ego (a ``behind`` relation right after
+    its noun and verb): one that then passes in front, the ego left unsaid, is overtaking it."""
+    kinds = set()
+    for _, mentions in clauses:
+        for k, m in enumerate(mentions):
+            if m.slot == "relation" and m.value == "behind":
+                subject = _subject_before(mentions[:k])
+                if subject is not None and subject.slot == "actor":
+                    kinds.add(subject.value)
+    return kinds
 
 
 def _past_the_front(before: list, clauses: list) -> str:
