@@ -3627,7 +3627,8 @@ def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), fol
         name, cfg, crit, link = s.behaviours[at]
         passes = name in ("cut_in", "overtake") and s.relation in (None, "ahead")  # ("pulls out to pass a parked van")
         swerves = name in ("cut_out", "change_lane") or passes or (name == "cut_in" and k in followed)
-        obstacle = standing[0] if standing else _left_behind(cfg, [j for j in beside if j != k], specs, k in followed)
+        in_egos_lane = k in followed or s.relation == "ahead"  # (followed, or said ahead of the ego)
+        obstacle = standing[0] if standing else _left_behind(cfg, [j for j in beside if j != k], specs, in_egos_lane)
         if swerves and obstacle is not None and (s.relation in (None, "ahead", "behind") or k in followed):
             direction = {key: v for key, v in cfg.items() if key == "direction"}
             s.behaviours = [("cut_out", direction, crit, link)] + _after_the_swerve(s.behaviours[at + 1 :])
@@ -3660,14 +3661,16 @@ def _swerve_at(spec: ActorSpec) -> int | None:
     return None
 
 
-def _left_behind(cfg: dict, beside: list[int], specs: list[ActorSpec], followed: bool) -> int | None:
+def _left_behind(cfg: dict, beside: list[int], specs: list[ActorSpec], in_egos_lane: bool) -> int | None:
     """Of the road users ``beside`` (indices) that stand in a lane said by its side, the one in the lane
-    a followed lead swerves out of (``cfg``: its move's config): the ego follows the lead, so that lane
-    is the ego's. One on the side the lead moves to stands in the lane it moves into, not in its way,
-    so the side it moves to must be read; a lead the ego does not follow may leave a lane that is not
-    the ego's."""
+    a lead in the ego's lane swerves out of (``cfg``: its move's config). A lead is in the ego's lane
+    when the ego follows it, or when it is said ahead of the ego with no lane of its own ("the car
+    ahead swerved into the right lane, revealing a mattress lying in the left lane"): the reading
+    places such a lead in the ego's lane, so the lane it leaves is the ego's. One on the side the lead
+    moves to stands in the lane it moves into, not in its way, so the side it moves to must be read; a
+    lead said in a lane beside the ego's may leave a lane that is not the ego's."""
     to = {1.0: "left", -1.0: "right"}.get(float(cfg.get("direction", 0.0)))
-    if not followed or to is None:
+    if not in_egos_lane or to is None:
         return None  # (moved "into lane 2": which side it leaves is not read)
     return next((j for j in beside if specs[j].relation != to), None)
 
