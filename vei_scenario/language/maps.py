@@ -198,9 +198,22 @@ def _roundabout(lanes: int) -> tuple[xodr.OpenDrive, MapInfo]:
         junction.add_connection(k + 1, before.id)
         junction.add_connection(k + 1, after.id)
         junction.add_connection(before.id, after.id)
+        _outer_arm_lanes_to_ring(junction, k + 1, before.id, after.id, lanes)
         odr.add_junction_creator(junction)
     odr.adjust_roads_and_lanes()
     return odr, _four_arms("roundabout", lanes, {})
+
+
+def _outer_arm_lanes_to_ring(junction, arm: int, before: int, after: int, lanes: int) -> None:
+    """Connect the arm's lanes beyond the one next to its centre line to the one-lane ring: each lane
+    driving in merges onto the ring, and the ring feeds each lane driving out. Why: the ring has one
+    lane and the arm ``lanes``, and of unequal lanes only the inner pair is joined by itself, so a
+    road user in the kerb lane of a two-lane arm (the ego in lane 1, a road user waiting at an arm)
+    would come to the ring and find no road on: it would stand at the arm's end for the whole run,
+    and a route out to an outer lane would have no chain of roads."""
+    for k in range(2, lanes + 1):
+        junction.add_connection(arm, after, -k, -1)
+        junction.add_connection(before, arm, -1, k)
 
 
 def _read_spec(spec: dict) -> tuple[str, int, float, bool]:
