@@ -30,7 +30,7 @@ from pathlib import Path
 from scenariogeneration import xosc
 
 from vei_scenario.language import maps, placement
-from vei_scenario.language.behaviours import behaviour, cut_in
+from vei_scenario.language.behaviours import behaviour, cut_in, overtake
 from vei_scenario.language.behaviours.base import ActorContext, Condition, G, value
 from vei_scenario.language.description_text import plain_text
 from vei_scenario.language.layers import behaviour_nodes
@@ -406,6 +406,8 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         else:
             entities.add_scenario_object(name, _vehicle(name, kind, mu, top))
         init.add_init_action(name, xosc.TeleportAction(position))
+        if does[0] == "overtake":  # (one closing in behind the ego pulls out before it speeds up past)
+            speed = overtake.start_speed(ego_speed, speed, adv["spawn"]["relation"])
         init.add_init_action(name, xosc.AbsoluteSpeedAction(round(speed, 3), _step()))
         builder = _StoryBuilder(name, ctx)
         builder.emit(adv["behaviour"], [])

@@ -42,7 +42,9 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     if ctx.actor_lane_id != left:
         pull_out.insert(0, lane_change_to(left, dur))
     return [
-        Step("pull_out", pull_out, delay_s=value(cfg, PARAMETERS, "delay_s")),
+        # (held 0 s: the watch for alongside starts with the pull-out, which a faster one may pass
+        # the ego during; waiting for its end it would never see the gap at zero and never cut back)
+        Step("pull_out", pull_out, delay_s=value(cfg, PARAMETERS, "delay_s"), hold_s=0.0),
         # alongside first (free space gap zero), then far enough ahead: the distance condition has no sign
         Step("alongside", [speed_action(fast, rate=2.5)], conditions=[Condition("ego_within", 0.01)]),
         Step(
@@ -76,6 +78,17 @@ def place(ego_speed: float, lengths_m: float, cfg: dict, speed: float | None = N
     closing = max((speed if speed is not None else ego_speed) - ego_speed, 0.0)
     out_s = value(cfg, PARAMETERS, "delay_s") + value(cfg, PARAMETERS, "lane_change_s")
     return -(lengths_m / 2 + max(BEHIND_M, closing * out_s + OUT_BEFORE_LEVEL_M)), ego_speed
+
+
+def start_speed(ego_speed: float, speed: float, relation: str) -> float:
+    """The speed (m/s) an overtaker starts at: its own, except that one behind a moving ego in its
+    lane (``relation`` behind) and faster than it starts at the ego's and speeds up as it pulls out.
+    Why: closing in on the ego's tail in its lane it is, to the ego's planner, a road user about to
+    run into it, and the ego brakes hard for it (and is run into, or passed before the pull-out is
+    over); pulling out first, as one who overtakes does, it comes past in the next lane."""
+    if relation == "behind" and ego_speed > STANDING_MPS and speed > ego_speed:
+        return ego_speed
+    return speed
 
 
 def oncoming(ctx: ActorContext) -> bool:
