@@ -831,9 +831,9 @@ def test_a_cruise_setting_of_another_or_a_time_is_not_the_egos_speed(text):
     [
         ("Late last night on a one-way street I was going slowly 20. A courier came the wrong way in my lane.", 20),
         ("We were driving carefully 30, then a boy ran out from behind the bus.", 30),
-        ("I was travelling steadily 50 on the ring road and a lorry pulled out of a side road.", 50),
+        ("I was travelling steadily 50 on the ring road and a truck pulled out of a side road.", 50),
         ("my light was green, i was going straight with 40, a scooter ran the red from the left and i hit him", 40),
-        ("I was going very slowly 15, a cyclist came off the pavement right in front of me.", 15),
+        ("I was going very slowly 15, a cyclist came off the footpath right in front of me.", 15),
         ("I was driving with about 60 when a van pulled out of a side road on my left.", 60),
         ("Was driving normally 40 when a kid on a bike came out of a driveway.", 40),
     ],

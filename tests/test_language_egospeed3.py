@@ -33,7 +33,7 @@ def test_two_numbers_with_a_comma_after_a_verb_of_going_are_a_range(text, mps):
     "text, mps",
     [
         ("I was doing 30, 40 m behind a bus, when a cyclist cut in front of me.", 30 * KPH),
-        ("I was doing 40, 2 cars behind a lorry, when a van cut in front of me.", 40 * KPH),
+        ("I was doing 40, 2 cars behind a truck, when a van cut in front of me.", 40 * KPH),
     ],
     ids=["then-a-distance", "then-a-count"],
 )

@@ -11,6 +11,16 @@ alone ("doing 40 in a 30", "it's a twenty") is a British name too: where miles a
 the limits of towns and a road is called by them; where km/h is signed, towns are signed 50 and a 30 is
 said as a zone ("a 30 zone"), which is said in both and tells nothing.
 
+A story told in the first person says more: a driver who tells their own drive in the words of British
+roads ("the lorry in front", "a kid came off the pavement", "clipped my wing mirror") reads their
+speedometer in mph, as the British one is. Those words alone are not enough: a test engineer in
+Britain writes them and gives km/h. Only words no other English of km/h says are counted: "lorry" and
+"pavement" (Australia says truck and footpath), "nearside" and "offside", a "pushbike", an "artic",
+a "car park" and a "wing mirror"; and the American "fender". Commonwealth words ("kerb", "tyre",
+"bonnet", "windscreen") are said in Australia and India too, which sign km/h. So does a limit called by
+its bare number ("it's a 20 limit", "40 limit, and I was doing 40", "the national speed limit"): where
+km/h is signed, a limit is said with its unit or as a zone ("a 30 zone", said in both).
+
 Only the unit of a bare speed is read from here, and only where the text states no unit of its own
 (:func:`vei_scenario.language.quantities.carried_unit` asks that first).
 """
@@ -37,6 +47,38 @@ def said_in_miles_english(tokens: list[str]) -> bool:
     if any(t in MILES_ENGLISH_WORDS for t in tokens):
         return True
     return any(t in _CROSSING_NAMES and nxt in _CROSSINGS for t, nxt in zip(tokens, tokens[1:]))
+
+
+#: Words of the road only British (or American) English says (see the module's docstring), one word or two.
+NARRATORS_MILES_WORDS = frozenset(
+    {"lorry", "lorries", "pavement", "pavements", "nearside", "offside", "pushbike", "pushbikes", "artic", "artics",
+     "fender", "fenders"}
+)  # fmt: skip
+NARRATORS_MILES_PAIRS = frozenset({("car", "park"), ("car", "parks"), ("wing", "mirror"), ("wing", "mirrors")})
+
+
+#: Numbers of a limit called by them alone, in words ("the forty limit"); figures are read as figures.
+_LIMIT_NUMBERS = frozenset({"twenty", "thirty", "forty", "fifty", "sixty", "seventy"})
+
+
+def told_in_miles_english(tokens: list[str]) -> bool:
+    """Whether the words ``tokens`` (lowercased, as written, figures as words of their own) say the road
+    in words only British or American English uses ("the lorry", "off the pavement", "my wing mirror"),
+    or call a limit by its bare number ("a 20 limit", "the national speed limit"), and are not set in
+    Ireland: in a story told in the first person, the narrator's bare speeds are in mph (see the module's
+    docstring; the caller asks only of such a story). Not "a 30 zone", nor "the 50 km/h limit"."""
+    if any(t in _IRISH_POLICE for t in tokens):
+        return False
+    if any(t in NARRATORS_MILES_WORDS for t in tokens):
+        return True
+    for k, (t, nxt) in enumerate(zip(tokens, tokens[1:])):
+        if (t, nxt) in NARRATORS_MILES_PAIRS:
+            return True
+        if nxt == "limit" and (t.isdigit() or t in _LIMIT_NUMBERS):
+            return True  # ("a 20 limit", "40 limit, and I was doing 40")
+        if (t, nxt) == ("national", "speed") and tokens[k + 2 : k + 3] == ["limit"]:
+            return True
+    return False
 
 
 #: The town limits of Britain, by which a road is called ("a 30", "the twenty"): in figures and in words.

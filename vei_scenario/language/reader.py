@@ -88,7 +88,7 @@ from vei_scenario.language.comment_clause import without_comment_clauses
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
-from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english
+from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english, told_in_miles_english
 from vei_scenario.language.motion import (
     chains,
     destinations_not_origins,
@@ -876,6 +876,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
     imperial = imperial or road_called_by_its_limit(tokens)  # ("doing 40 in a 30": a British town road)
     narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
+    said = re.findall(r"[a-z]+|\d+", plain_letters(text.lower()))  # (as written, with its figures)
+    imperial = imperial or (narrated and told_in_miles_english(said))  # ("I was doing 20 ... the lorry")
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(
