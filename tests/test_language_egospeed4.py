@@ -1,7 +1,7 @@
 """The unit of a bare speed a narrator gives in the words of British (or American) roads.
 
-A driver who tells their own drive with a lorry, a pavement, a wing mirror or a limit called by its
-bare number ("a 20 limit") reads their speedometer in mph. Words every English of km/h shares ("kerb"),
+A driver who tells their own drive with a lorry, a pavement, a wing mirror or a limit called by a British town
+limit ("a 20 limit") reads their speedometer in mph. Words every English of km/h shares ("kerb", "car park"),
 a zone ("a 30 zone"), a stated unit, a text set in Ireland, and a text not told in the first person
 keep km/h. Every wording here is written for these tests (none is from a corpus)."""
 
@@ -27,9 +27,8 @@ def _ego(text: str) -> float | None:
         ("I was doing about 30 when a lorry pulled out of a side road on my left.", 30),
         ("I was doing about 40 when a van coming the other way clipped my wing mirror.", 40),
         ("It's a 20 limit on our street and I was doing 20 when a cyclist pulled out from the left.", 20),
-        ("We were only doing fifteen through the car park when a car reversed out of a bay on our right.", 15),
     ],
-    ids=["pavement", "lorry", "wing-mirror", "bare-limit", "car-park"],
+    ids=["pavement", "lorry", "wing-mirror", "bare-limit"],
 )
 def test_a_narrators_bare_speed_in_british_road_words_is_mph(text, mph):
     assert _ego(text) == pytest.approx(mph * MPH, abs=0.05)
@@ -43,8 +42,9 @@ def test_a_narrators_bare_speed_in_british_road_words_is_mph(text, mph):
         ("It's a 30 zone and I was doing 30 when a kid ran out from the right.", 30),
         ("I was doing 50 km/h when a lorry pulled out on my left.", 50),
         ("I was doing 50 when a lorry pulled out on my left. The gardai came and took details.", 50),
+        ("We were only doing fifteen through the car park when a car reversed out of a bay on our right.", 15),
     ],
-    ids=["not-first-person", "kerb-is-commonwealth", "zone", "unit-stated", "ireland"],
+    ids=["not-first-person", "kerb-is-commonwealth", "zone", "unit-stated", "ireland", "car-park"],
 )
 def test_near_misses_keep_km_h(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
@@ -55,6 +55,7 @@ def test_near_misses_keep_km_h(text, kph):
     [
         ("a 20 limit here".split(), True),
         ("the national speed limit".split(), True),
+        ("the thirty limit".split(), True),
         ("the forty limit".split(), True),
         ("the 50 km h limit".split(), False),
         ("a 30 zone".split(), False),

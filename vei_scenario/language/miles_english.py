@@ -4,22 +4,30 @@ Why: a writer who gives a speed with no unit gives it in the unit of their road 
 more often which English they speak than which unit they mean. Some words of the road and of daily
 life are used only where miles per hour are signed: "quid" is British money, a "bridleway" is a
 British right of way, and pelican, puffin and toucan crossings are British signals. A text that uses
-one is set where miles per hour are signed. Commoner British words ("pavement", "lorry") are not
-used: British test engineers write them and give their speeds in km/h. Ireland says British words
-too and signs km/h; its police, the Gardaí, say so first. A town road called by its limit's number
-alone ("doing 40 in a 30", "it's a twenty") is a British name too: where miles are signed, 20 and 30 are
-the limits of towns and a road is called by them; where km/h is signed, towns are signed 50 and a 30 is
-said as a zone ("a 30 zone"), which is said in both and tells nothing.
+one is set where miles per hour are signed. Ireland says British words too and signs km/h; its
+police, the Gardaí, say so first. A town road called by its limit's number alone ("doing 40 in a 30",
+"it's a twenty") is a British name too: where miles are signed, 20 and 30 are the limits of towns and a
+road is called by them; where km/h is signed, towns are signed 50 and a 30 is said as a zone ("a 30
+zone"), which is said in both and tells nothing.
 
-A story told in the first person says more: a driver who tells their own drive in the words of British
-roads ("the lorry in front", "a kid came off the pavement", "clipped my wing mirror") reads their
-speedometer in mph, as the British one is. Those words alone are not enough: a test engineer in
-Britain writes them and gives km/h. Only words no other English of km/h says are counted: "lorry" and
-"pavement" (Australia says truck and footpath), "nearside" and "offside", a "pushbike", an "artic",
-a "car park" and a "wing mirror"; and the American "fender". Commonwealth words ("kerb", "tyre",
-"bonnet", "windscreen") are said in Australia and India too, which sign km/h. So does a limit called by
-its bare number ("it's a 20 limit", "40 limit, and I was doing 40", "the national speed limit"): where
-km/h is signed, a limit is said with its unit or as a zone ("a 30 zone", said in both).
+Commoner British road words are not enough on their own: British test engineers write them and give
+their speeds in km/h. A story told in the first person says more: a driver who tells their own drive
+in words of British (or American) roads that Englishes of km/h say far less reads their speedometer
+in mph. Of the words that tell a British side of the road
+(:data:`vei_scenario.language.sides.LEFT_HAND_WORDS`), "kerb", "carriageway", "HGV" and "footway"
+are said as much where km/h is signed, and count for nothing here; so do "car park" and "pushbike"
+(everyday in Australia and New Zealand), "tyre", "bonnet" and "windscreen". Those kept are "pavement"
+(Australia, New Zealand, India and Ireland say footpath), "nearside" and "offside", an "artic", a
+"wing mirror", and "lorry" and "fender": a lorry is said in Ireland, India, Kenya and Malaysia too,
+and a fender in Canada, but far more of those who write them sign mph, and those others keep left
+or name their country often enough (:mod:`~vei_scenario.language.sides` reads them by it). So is a
+limit called by a British one but 50 ("a 20 limit", "40 limit, and I was doing 40", "the national
+speed limit"): where km/h is signed a limit is said with its unit or as a zone, and a bare "50 limit"
+(or "80 limit") is a km/h one. Even so, a place named that signs km/h ("in Nairobi", "in Toronto",
+:func:`vei_scenario.language.sides.names_a_km_h_place`) keeps km/h, and so does a bare speed of 90 or
+more ("doing 100", "at 90 on the motorway"): Britain's fastest limit is 70, and no narrator owns to 90
+mph as if it were the traffic's pace. (Roads, road users and distances only km/h countries name, "the
+Autobahn", "a ute", "3 km", are asked first, by :func:`vei_scenario.language.quantities.metric_country`.)
 
 Only the unit of a bare speed is read from here, and only where the text states no unit of its own
 (:func:`vei_scenario.language.quantities.carried_unit` asks that first).
@@ -28,6 +36,7 @@ Only the unit of a bare speed is read from here, and only where the text states 
 from __future__ import annotations
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.sides import LEFT_HAND_WORDS, names_a_km_h_place
 
 #: Words only British or American English use of the road and its traffic (see the module's docstring).
 MILES_ENGLISH_WORDS = frozenset({"quid", "bridleway", "bridleways"})
@@ -49,40 +58,59 @@ def said_in_miles_english(tokens: list[str]) -> bool:
     return any(t in _CROSSING_NAMES and nxt in _CROSSINGS for t, nxt in zip(tokens, tokens[1:]))
 
 
-#: Words of the road only British (or American) English says (see the module's docstring), one word or two.
-NARRATORS_MILES_WORDS = frozenset(
-    {"lorry", "lorries", "pavement", "pavements", "nearside", "offside", "pushbike", "pushbikes", "artic", "artics",
-     "fender", "fenders"}
-)  # fmt: skip
-NARRATORS_MILES_PAIRS = frozenset({("car", "park"), ("car", "parks"), ("wing", "mirror"), ("wing", "mirrors")})
+#: British road words (:data:`~vei_scenario.language.sides.LEFT_HAND_WORDS`) said where km/h is signed too.
+_SAID_WHERE_KM_H = frozenset({"kerb", "kerbs", "kerbside", "carriageway", "hgv", "hgvs", "footway", "footways"})
+#: Words of the road British or American English says far more than any English of km/h (see the module's
+#: docstring), one word or two.
+NARRATORS_MILES_WORDS = (LEFT_HAND_WORDS - _SAID_WHERE_KM_H) | {"artic", "artics", "fender", "fenders"}
+NARRATORS_MILES_PAIRS = frozenset({("wing", "mirror"), ("wing", "mirrors")})
+#: The town limits of Britain, by which a road or a limit is called ("a 30", "the twenty limit").
+_TOWN_LIMITS = frozenset({"20", "30", "twenty", "thirty"})
+#: The limits of Britain but 50, a km/h town's too ("a 40 limit"; not "a 50 limit", nor "an 80 limit").
+_BRITISH_LIMITS = _TOWN_LIMITS | {"40", "60", "70", "forty", "sixty", "seventy"}
+#: The least bare speed no driver means in mph: above Britain's fastest limit, 70, by more than a narrator
+#: owns to ("doing 90 on the motorway", "doing 100").
+_NO_MILES_SPEED = 90
+#: Words a driver's own speed is said after ("doing 100", "at about 110").
+_SPEED_SAID = frozenset({"doing", "doin", "at", "going", "driving", "travelling", "traveling", "hitting"})
+_ROUGHLY = frozenset({"about", "around", "over", "nearly", "almost", "roughly", "maybe", "a", "steady", "good"})
 
 
-#: Numbers of a limit called by them alone, in words ("the forty limit"); figures are read as figures.
-_LIMIT_NUMBERS = frozenset({"twenty", "thirty", "forty", "fifty", "sixty", "seventy"})
+def _km_h_speed(tokens: list[str]) -> bool:
+    """Whether a driver's speed of 90 or more is said in ``tokens`` ("doing 100", "at about 120")."""
+    for k, t in enumerate(tokens):
+        if t.isdigit() and int(t) >= _NO_MILES_SPEED:
+            j = k - 1
+            while j >= 0 and tokens[j] in _ROUGHLY:
+                j -= 1
+            if j >= 0 and tokens[j] in _SPEED_SAID:
+                return True
+    return False
 
 
-def told_in_miles_english(tokens: list[str]) -> bool:
+def told_in_miles_english(tokens: list[str], text: str = "") -> bool:
     """Whether the words ``tokens`` (lowercased, as written, figures as words of their own) say the road
-    in words only British or American English uses ("the lorry", "off the pavement", "my wing mirror"),
-    or call a limit by its bare number ("a 20 limit", "the national speed limit"), and are not set in
-    Ireland: in a story told in the first person, the narrator's bare speeds are in mph (see the module's
-    docstring; the caller asks only of such a story). Not "a 30 zone", nor "the 50 km/h limit"."""
-    if any(t in _IRISH_POLICE for t in tokens):
+    in words British English says far more than any English of km/h ("off the pavement", "my wing
+    mirror", "the lorry"), or call a limit by a British one but 50 alone ("a 20 limit", "the national
+    speed limit"), and are not set where km/h is signed (the Gardaí; a place that signs km/h named in
+    ``text``, the text as written; a speed of 90 or more): in a story told in the first person, the
+    narrator's bare speeds are in mph (see the module's docstring; the caller asks only of such a
+    story). Not "a car park", "a 30 zone", "a 50
+    limit", nor "the 50 km/h limit"."""
+    if any(t in _IRISH_POLICE for t in tokens) or _km_h_speed(tokens) or names_a_km_h_place(text):
         return False
     if any(t in NARRATORS_MILES_WORDS for t in tokens):
         return True
     for k, (t, nxt) in enumerate(zip(tokens, tokens[1:])):
         if (t, nxt) in NARRATORS_MILES_PAIRS:
             return True
-        if nxt == "limit" and (t.isdigit() or t in _LIMIT_NUMBERS):
+        if nxt == "limit" and t in _BRITISH_LIMITS:
             return True  # ("a 20 limit", "40 limit, and I was doing 40")
         if (t, nxt) == ("national", "speed") and tokens[k + 2 : k + 3] == ["limit"]:
             return True
     return False
 
 
-#: The town limits of Britain, by which a road is called ("a 30", "the twenty"): in figures and in words.
-_TOWN_LIMITS = frozenset({"20", "30", "twenty", "thirty"})
 #: Words before a road called by its limit: where one is ("in a 30") or what a road is ("it's a twenty").
 _BEFORE_ROAD = frozenset({"in", "through", "is", "'s", "was"})
 #: The noun of an age before "old" ("a 30, 35 year old", "a twenty or so yrs old").

@@ -872,12 +872,11 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     imperial = Q.imperial_lengths(text.lower())  # ("ten feet ahead": a writer whose bare speeds are mph)
     imperial = imperial or Q.road_number_written_whole(text.lower())  # ("A46 towards Lincoln": a British road)
     imperial = imperial or Q.a_road_named(text.lower())  # ("on the A-road": a British road by its class)
-    written = re.findall(r"[a-z]+", plain_letters(text.lower()))  # (as written, before any is read as another)
+    written = re.findall(r"[a-z]+|\d+", plain_letters(text.lower()))  # (as written, figures too, before any is read)
     imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
     imperial = imperial or road_called_by_its_limit(tokens)  # ("doing 40 in a 30": a British town road)
     narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
-    said = re.findall(r"[a-z]+|\d+", plain_letters(text.lower()))  # (as written, with its figures)
-    imperial = imperial or (narrated and told_in_miles_english(said))  # ("I was doing 20 ... the lorry")
+    imperial = imperial or (narrated and told_in_miles_english(written, text))  # ("I was doing 20 ... the pavement")
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
         return next(

@@ -330,8 +330,10 @@ class Said:
 
 #: Words of the road only writers who drive on the left use (British), and only writers who drive on
 #: the right and give miles per hour use (American): they say which side a writer's "inside lane" or
-#: "nearside" is on, with or without a unit.
-_LEFT_HAND_WORDS = frozenset(
+#: "nearside" is on, with or without a unit. They tell the side, not the unit: most are said in Ireland,
+#: Australia, India and Africa too, which sign km/h (:mod:`vei_scenario.language.miles_english` counts
+#: for mph only those of them no English of km/h says).
+LEFT_HAND_WORDS = frozenset(
     {"lorry", "lorries", "carriageway", "kerb", "kerbs", "kerbside", "hgv", "hgvs", "nearside", "offside",
      "pavement", "pavements", "footway", "footways"}
 )  # fmt: skip
@@ -366,7 +368,7 @@ _KEEPS_LEFT = (
     "Tanzania", "Zambia", "Zimbabwe", "Botswana", "Namibia", "Jamaica", "Cyprus", "Malta", "Mauritius",
     "London", "Dublin", "Edinburgh", "Glasgow", "Cardiff", "Belfast", "Melbourne", "Brisbane", "Auckland",
     "Johannesburg", "Cape Town", "Tokyo", "Osaka", "Mumbai", "Delhi", "Bangalore", "Bengaluru", "Chennai",
-    "Kolkata", "Karachi", "Dhaka", "Nairobi", "Kuala Lumpur",
+    "Kolkata", "Karachi", "Dhaka", "Nairobi", "Kuala Lumpur", "Sydney",
 )  # fmt: skip
 _KEEPS_RIGHT = (
     "US", "U.S.", "USA", "U.S.A.", "United States", "America", "Canada", "Mexico", "France", "Germany", "Spain",
@@ -382,10 +384,29 @@ _CASED = frozenset({"US", "UK", "USA"})
 def _place_pattern(names: tuple[str, ...]) -> re.Pattern:
     cased = "|".join(re.escape(n) for n in names if n in _CASED)
     other = "|".join(re.escape(n) for n in sorted(names, key=len, reverse=True) if n not in _CASED)
-    return re.compile(rf"(?<![\w.])(?:{cased}|(?i:{other}))(?![\w-])")
+    either = f"{cased}|(?i:{other})" if cased else f"(?i:{other})"
+    return re.compile(rf"(?<![\w.])(?:{either})(?![\w-])")
 
 
 _LEFT_PLACES, _RIGHT_PLACES = _place_pattern(_KEEPS_LEFT), _place_pattern(_KEEPS_RIGHT)
+#: Of the places above, those that sign speeds in miles per hour (Britain, Northern Ireland, the US).
+_SIGNS_MILES = frozenset(
+    {"UK", "U.K.", "United Kingdom", "Britain", "Great Britain", "England", "Scotland", "Wales", "Northern Ireland",
+     "London", "Edinburgh", "Glasgow", "Cardiff", "Belfast", "US", "U.S.", "USA", "U.S.A.", "United States",
+     "America", "New York", "Los Angeles", "Chicago", "California", "Texas", "Florida"}
+)  # fmt: skip
+_KM_PLACES = _place_pattern(tuple(n for n in _KEEPS_LEFT + _KEEPS_RIGHT if n not in _SIGNS_MILES))
+#: "Ireland" inside "Northern Ireland" is no km/h place.
+_NORTHERN = re.compile(r"northern\s+$", re.IGNORECASE)
+
+
+def names_a_km_h_place(text: str) -> bool:
+    """Whether ``text`` names a country or city that signs speeds in km/h ("in Nairobi", "near Kuala
+    Lumpur", "in Toronto"; not "in Belfast", "Northern Ireland", "in the US"): its writer's bare speeds
+    are in km/h, whatever words of British or American roads they share."""
+    return any(not _NORTHERN.search(text[: m.start()]) for m in _KM_PLACES.finditer(text))
+
+
 #: The convention said in words: "left-hand traffic", "we drive on the left", "traffic keeps right".
 _CONVENTION = re.compile(
     r"\b(left|right)[- ]hand traffic\b"
@@ -421,7 +442,7 @@ def drives_on_left(tokens: list[str], text: str = "") -> bool:
     words = set(tokens)
     if "mph" in words:
         return not words & _RIGHT_HAND_WORDS
-    british = bool(words & _LEFT_HAND_WORDS)
+    british = bool(words & LEFT_HAND_WORDS)
     if words & _METRIC_SPEEDS:
         return british and told_in_the_past(tokens)
     return _motorway_number(tokens) or (british and (bool(words & _FIRST_PERSON) or told_in_the_past(tokens)))
