@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 from reading_of import kinds
 
+from vei_scenario.language import protagonist
 from vei_scenario.language.reader import read
 
 
@@ -98,3 +99,9 @@ def test_the_one_from_the_side_that_brakes_is_still_the_ego_when_said_in_its_own
 )
 def test_two_that_brake_stay_a_tie(text, expected):
     assert sorted(kinds(text)) == expected
+
+
+def test_a_noun_after_its_article_is_no_verb_of_reacting_past_the_relative():
+    tokens = "a bus pulling away from a stop and then cut in".split()
+    assert protagonist._past_bare_relative(tokens, 2) == 0
+    assert protagonist._past_bare_relative("a taxi approaching from the right braked".split(), 2) == 6

@@ -142,8 +142,8 @@ def _past_bare_relative(tokens: list[str], k: int) -> int:
     else:
         return 0
     for m in range(j + 1, min(len(tokens), j + 12)):
-        if v := _verb_of_reacting(tokens, m):
-            return v
+        if tokens[m - 1] not in DEFINITE | INDEFINITE and (v := _verb_of_reacting(tokens, m)):
+            return v  # (not a noun after its article: "pulling away from a stop")
         w = tokens[m]
         if w in _CLAUSE_ENDS or (w.isalpha() and set(lemmas(w)) <= {"VERB", "AUX"} and "VERB" in lemmas(w)):
             return 0  # (another clause, or a verb that is not a reaction: "hit it and a bus braked")
