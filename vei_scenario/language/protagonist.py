@@ -88,10 +88,15 @@ class _Referent:
     placed_by: bool = False
     struck: bool = False  # the subject of a passive of contact: "was struck by", "got rear-ended"
     known: bool = False  # introduced as known: bare ("Cab 22") or with "the"
-    #: Placed by only as where another came from ("approaching from the SUV's right"), never as a path,
-    #: front or lane another got into: see :func:`_reactor_among`.
-    origin_only: bool = True
-    brakes: bool = False  # the subject of a verb of reacting, whoever came before it ("A bus braked hard")
+    #: Placed by as a path, front or lane another got into ("into the path of the Toyota"), not only as
+    #: where another came from: see :func:`_reactor_among`.
+    placed_in_way: bool = False
+    #: The referents said to come from its side or to stop short of it ("a taxi approaching from the
+    #: SUV's right": the taxi, on the SUV).
+    origin_of: list = field(default_factory=list)
+    #: It reacts (brakes, stops, swerves) at all, whoever is named before its verb ("A bus braked hard",
+    #: "ran the red and braked"); :attr:`reacts` counts only a reaction after someone to react to.
+    brakes: bool = False
 
     @property
     def score(self) -> int:
@@ -108,6 +113,41 @@ def _past_aside(tokens: list[str], k: int, relative_only: bool = False) -> int:
         if close is not None and (relative or (close - k <= 7 and not relative_only)):  # (", a 54-year-old woman,")
             return close + 1
     return k
+
+
+#: Words that end the relative clause a mention opens without commas before a verb of its own could
+#: follow ("a taxi approaching from the SUV's right braked": "braked" is the taxi's; "... right and a bus
+#: braked" is not).
+_CLAUSE_ENDS = frozenset(
+    {",", ";", ":", ".", "!", "?", "and", "but", "or", "when", "as", "while", "which", "who", "that"}
+)
+
+
+def _past_bare_relative(tokens: list[str], k: int) -> int:
+    """Where a verb of reacting stands past a relative clause said without commas right after a
+    mention ("a taxi approaching from the SUV's right braked", "a car which was coming from the
+    lorry's right braked hard"), else 0. The clause is a subject relative ("which"/"who"/"that" with a
+    verb of its own, or a verb's -ing form), and nothing that ends a clause or another verb stands
+    between it and the reaction ("a taxi that the bus braked for" is the bus's braking)."""
+    if k >= len(tokens):
+        return 0
+    if tokens[k] in ("which", "who", "that"):
+        j = k + 1
+        while j < len(tokens) and tokens[j] in BEFORE_VERB:
+            j += 1
+        if j == k + 1 or j >= len(tokens) or "VERB" not in lemmas(tokens[j]):
+            return 0  # (an object relative, "that the bus braked for", or no verb of its own)
+    elif tokens[k].isalpha() and reduced_relative(tokens[k]):
+        j = k
+    else:
+        return 0
+    for m in range(j + 1, min(len(tokens), j + 12)):
+        if tokens[m - 1] not in DEFINITE | INDEFINITE and (v := _verb_of_reacting(tokens, m)):
+            return v  # (not a noun after its article: "pulling away from a stop")
+        w = tokens[m]
+        if w in _CLAUSE_ENDS or (w.isalpha() and set(lemmas(w)) <= {"VERB", "AUX"} and "VERB" in lemmas(w)):
+            return 0  # (another clause, or a verb that is not a reaction: "hit it and a bus braked")
+    return 0
 
 
 def reduced_relative(word: str) -> bool:
@@ -137,13 +177,21 @@ def _reacts(tokens: list[str], p, others: list[int], first: bool = False) -> boo
     roundabout failed to see a cyclist and braked hard"). A reaction is to someone: another road
     user (starting at one of ``others``) is named before the verb ("The bus stops at a stop and a
     pedestrian walks out" is the bus's own stop, no reaction)."""
+    return any(o < v for v in _verbs_of_reacting(tokens, p, first) for o in others)
+
+
+def _verbs_of_reacting(tokens: list[str], p, first: bool = False) -> list[int]:
+    """Where the verbs of reacting the mention is the subject of stand (see :func:`_reacts`): right
+    after it, past auxiliaries, adverbs and an aside with commas or a relative clause without them;
+    and, ``first`` in its sentence, one its sentence joins on with "and"/"but"."""
     at = []
     if first:
         end = sentence_span(tokens, p.end)[1]
         at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
-    if v := _verb_of_reacting(tokens, _past_aside(tokens, p.end)):
+    aside = _past_aside(tokens, p.end)
+    if v := _verb_of_reacting(tokens, aside) or (aside == p.end and _past_bare_relative(tokens, p.end)):
         at.append(v)
-    return any(o < v for v in at for o in others)
+    return at
 
 
 def _verb_of_reacting(tokens: list[str], k: int) -> int:
@@ -200,16 +248,26 @@ def _origin_of_another(tokens: list[str], p) -> bool:
 def _reactor_among(tied: list[_Referent]) -> _Referent | None:
     """Of motor vehicles ``tied`` on evidence, the one the story happens to, where that can be told:
     the only one that reacts (brakes, stops, swerves) while each other is placed by only as where
-    someone came from ("a taxi, approaching from the SUV's right, braked to a halt") and has no
-    speed, braking or blow of its own. A road user's approach named by another's side says nothing
-    of whom the story is told from; a reaction to the one that crossed its way does. Else None (two
-    that brake, or a path, front or lane said of one, stay a tie)."""
+    that one came from or stopped ("a taxi, approaching from the SUV's right, braked to a halt": the
+    SUV is placed by, as the taxi's origin, and never as a path, front or lane) and has no speed,
+    braking (any verb of reacting, "ran the red and braked") or blow of its own. A road user's
+    approach named by another's side says nothing of whom the story is told from; a reaction to the
+    one that crossed its way does. Else None: two that brake, a path, front or lane said of one, or
+    a reaction by someone other than the one said to come from the side ("A taxi came from the SUV's
+    right. A bus braked") stay a tie."""
     reacting = [r for r in tied if r.reacts]
     if len(reacting) != 1:
         return None
-    others = [r for r in tied if r is not reacting[0]]
-    if all(r.placed_by and r.origin_only and not (r.speed or r.brakes or r.struck) for r in others):
-        return reacting[0]
+    reactor = reacting[0]
+    others = [r for r in tied if r is not reactor]
+    if all(
+        r.placed_by
+        and not r.placed_in_way
+        and any(o is reactor for o in r.origin_of)
+        and not (r.speed or r.brakes or r.struck)
+        for r in others
+    ):
+        return reactor
     return None
 
 
@@ -276,9 +334,17 @@ def _drives_vehicle(tokens: list[str], p, vehicles: frozenset[str]) -> bool:
     return p.kind in vehicles and tokens[p.end - 1] == "driver" and len(words) >= 2 and words[-2] not in AT_WHEEL
 
 
+def _said_of(tokens: list[str], p, referents: list[_Referent]) -> _Referent | None:
+    """The referent whose mention last comes before ``p`` in its sentence: the one a place said by
+    ``p`` ("from the SUV's right") is said of ("a taxi approaching from the SUV's right")."""
+    start = sentence_span(tokens, p.start)[0]
+    before = [(q.start, o) for o in referents for q in o.mentions if start <= q.start and q.end <= p.start]
+    return max(before, key=lambda x: x[0])[1] if before else None
+
+
 def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]) -> None:
     """What the text says of ``r``: its speed, its reaction to another of ``referents``, whether
-    another road user is placed by it."""
+    another road user is placed by it (and, where only as the origin of one, which one)."""
     others = [q.start for o in referents if o is not r for q in o.mentions]
     for p in r.mentions:
         nxt = next((q.start for q in users if q.start >= p.end), len(tokens))
@@ -287,11 +353,15 @@ def _evidence(tokens: list[str], users, r: _Referent, referents: list[_Referent]
         s = p.start
         while s > 0 and tokens[s - 1] not in (".", ";", "!", "?"):
             s -= 1
-        r.reacts |= _reacts(tokens, p, others, first=not any(s <= q.start < p.start for q in users))
-        r.brakes |= bool(_verb_of_reacting(tokens, _past_aside(tokens, p.end)))
+        first = not any(s <= q.start < p.start for q in users)
+        r.reacts |= _reacts(tokens, p, others, first=first)
+        r.brakes |= bool(_verbs_of_reacting(tokens, p, first=first))
         placed = not of and _placed_by(tokens, p)
         r.placed_by |= placed
-        r.origin_only &= not placed or _origin_of_another(tokens, p)
+        if placed and _origin_of_another(tokens, p):
+            r.origin_of.append(_said_of(tokens, p, referents))
+        else:
+            r.placed_in_way |= placed
         r.struck |= not of and _struck(tokens, p)
 
 
