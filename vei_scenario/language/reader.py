@@ -85,6 +85,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.comment_clause import without_comment_clauses
+from vei_scenario.language.elsewhere import stands_elsewhere
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
@@ -2986,6 +2987,7 @@ def _read(text: str) -> Reading:
         r.actors,
         {k for k, a in enumerate(actors) if a.double_parked and a.kind in VEHICLES},
         {k for k, a in enumerate(actors) if a.followed},
+        {k for k, a in enumerate(actors) if stands_elsewhere(scanned, a.named_end)},
     )
     _criticality_said_apart(clauses, r.actors)
     apply_manner(stated_manner(tokens), r.actors)  # (the scales of closeness, margin and timing)
@@ -3596,7 +3598,12 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
             spec.relation = f"roadside_{parked_sides[0]}"
 
 
-def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), followed: set[int] = frozenset()) -> None:
+def _cut_outs(
+    specs: list[ActorSpec],
+    double_parked: set[int] = frozenset(),
+    followed: set[int] = frozenset(),
+    elsewhere: set[int] = frozenset(),
+) -> None:
     """A vehicle ahead that swerves out of the lane while something stands in it (or "swerves round"
     it) reveals that to the ego: a cut-out, with the standing actor as its obstacle. Without
     anything standing, a swerve out is a lane change. A road user in the lane that stops (brakes to
@@ -3604,7 +3611,9 @@ def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), fol
     ``double_parked`` (by index): parked beside the parked cars, it stands in the traffic lane, whatever
     side of the road it is on. Of two standing, the one that swerves (:func:`_swerve_at`) moves, and a vehicle
     the ego follows (``followed``, by index) swerves out of the ego's lane, ahead, whatever side the
-    lane it moves into gave it."""
+    lane it moves into gave it. What stands in a lane said by its side is revealed only if it stands
+    there now, on the ego's road: not one ``elsewhere`` (by index; :mod:`elsewhere`: on another
+    carriageway or a slip road, at another time, or since taken away)."""
     standing = [
         k
         for k, s in enumerate(specs)
@@ -3616,6 +3625,7 @@ def _cut_outs(specs: list[ActorSpec], double_parked: set[int] = frozenset(), fol
         k
         for k, s in enumerate(specs)
         if s.relation in ("left", "right")
+        and k not in elsewhere
         and motion.stops_in_the_lane(replace(s, relation=None), specs)
         and _swerve_at(s) is None
     ]

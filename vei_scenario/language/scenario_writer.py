@@ -106,6 +106,18 @@ def top_speed(adv: dict, ego_speed: float) -> float:
     return round(top, 3)
 
 
+def _overtaking_at(node: dict, ego_speed: float, speed: float, relation: str) -> dict:
+    """A copy of behaviour tree ``node`` whose overtakes pass at the overtaker's stated ``speed``
+    (:func:`overtake.stated_gain`): one that starts at the ego's speed reaches its own as it passes."""
+    if node.get("behaviour") == "overtake":
+        return {**node, "config": overtake.stated_gain(node.get("config", {}), ego_speed, speed, relation)}
+    out = dict(node)
+    for key in ("sequence", "parallel"):
+        if key in node:
+            out[key] = [_overtaking_at(child, ego_speed, speed, relation) for child in node[key]]
+    return out
+
+
 def _vehicle(name: str, kind: str, mu: float, vmax: float | None = None):
     (length, width, height), category, mass, kind_vmax, amax, dmax = TYPES[kind]
     vmax = kind_vmax if vmax is None else vmax
@@ -406,11 +418,13 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         else:
             entities.add_scenario_object(name, _vehicle(name, kind, mu, top))
         init.add_init_action(name, xosc.TeleportAction(position))
+        tree = adv["behaviour"]
         if does[0] == "overtake":  # (one closing in behind the ego pulls out before it speeds up past)
+            tree = _overtaking_at(tree, ego_speed, speed, adv["spawn"]["relation"])  # (to its stated speed)
             speed = overtake.start_speed(ego_speed, speed, adv["spawn"]["relation"])
         init.add_init_action(name, xosc.AbsoluteSpeedAction(round(speed, 3), _step()))
         builder = _StoryBuilder(name, ctx)
-        builder.emit(adv["behaviour"], [])
+        builder.emit(tree, [])
         group = xosc.ManeuverGroup(f"{name}_group")
         group.add_actor(name)
         group.add_maneuver(builder.maneuver)

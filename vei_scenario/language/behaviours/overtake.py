@@ -91,6 +91,17 @@ def start_speed(ego_speed: float, speed: float, relation: str) -> float:
     return speed
 
 
+def stated_gain(cfg: dict, ego_speed: float, speed: float, relation: str) -> dict:
+    """``cfg`` (an overtake's config) with ``speed_gain_mps`` the overtaker's stated ``speed`` less the
+    ego's, within the parameter's bounds, where it starts at the ego's speed (:func:`start_speed`) and
+    no gain is set. Why: starting at the ego's, it reaches only the ego's speed and the gain; without
+    this the speed the text gives it ("a motorbike at 120 km/h overtakes", ego 50) is never played."""
+    if start_speed(ego_speed, speed, relation) == speed or "speed_gain_mps" in cfg:
+        return cfg
+    p = PARAMETERS["speed_gain_mps"]
+    return {**cfg, "speed_gain_mps": round(min(max(speed - ego_speed, p.low), p.high), 3)}
+
+
 def oncoming(ctx: ActorContext) -> bool:
     """Whether the road user drives the other way on the ego's road: in a lane across the centre line,
     facing that lane's way (road users on other roads start in lanes of the ego's sign)."""
