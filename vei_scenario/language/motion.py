@@ -2650,9 +2650,9 @@ def _past_the_front_unsaid(who, tokens: list[str], j: int) -> bool:
 
 
 def _said_from_behind(clauses: list, tokens: list[str]) -> list:
-    """The road users (their mentions) said to come "from behind" the ego: a ``behind`` relation right
-    after its noun and verb, with no one else's back after it ("came out from behind a parked lorry" is
-    behind the lorry). One that then passes in front, the ego left unsaid, is overtaking it."""
+    """The road users (their mentions) said to come "from behind" the ego: a ``behind`` relation said of
+    it (the last road user named before it), with no one else's back after it ("came out from behind a
+    parked lorry" is behind the lorry). One that then passes in front, the ego unsaid, overtakes it."""
     found = []
     for _, mentions in clauses:
         for k, m in enumerate(mentions):
@@ -2660,9 +2660,6 @@ def _said_from_behind(clauses: list, tokens: list[str]) -> list:
                 continue
             subject = _subject_before(mentions[:k])
             if subject is None or subject.slot != "actor":
-                continue
-            between = mentions[mentions.index(subject) + 1 : k]
-            if any(x.slot not in _VERB_SLOTS for x in between):
                 continue
             said = tokens[m.end : m.end + 2]
             egos = [x for x in mentions[k + 1 :] if x.slot == "actor" and x.value == "ego" and x.start <= m.end + 1]
