@@ -2521,11 +2521,13 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
     in front" with no "of" ("... with a metre to spare") and "past the front" with no owner are
     across its front too (not one said to come from behind, which overtakes)."""
     out = []
-    from_behind = _said_from_behind(clauses)
+    said = [x for _, xs in clauses for x in xs]
+    from_behind = _said_from_behind(clauses, tokens)
     for link, mentions in clauses:
         kept = list(mentions)
         for k, m in enumerate(kept):
-            front = _close_by_the_egos_front(tokens, m.end - 1) or _past_the_front_unsaid(kept[:k], tokens, m.end - 1)
+            who = _who_passes(kept[:k], said)
+            front = _close_by_the_egos_front(tokens, m.end - 1) or _past_the_front_unsaid(who, tokens, m.end - 1)
             if passes(m) and m.words.split()[-1] == "past" and front:
                 kept[k] = replace(m, value=(_past_the_front(kept[:k], clauses), {}))  # ("went right past our bonnet")
                 continue
@@ -2535,7 +2537,8 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             while j < len(tokens) and (tokens[j] in _CLOSE | _HOW_NEAR or tokens[j].replace(".", "").isdigit()):
                 j += 1
             overtakes_too = any(
-                passes(x) and x is not m and abs(x.start - m.start) < 12 for _, xs in clauses for x in xs
+                passes(x) and x is not m and abs(x.start - m.start) < 12 and not _someone_between(said, x, m)
+                for x in said
             )
             if _across_the_ego(tokens, j) or (not overtakes_too and _close_by_the_egos_front(tokens, j)):
                 kept[k] = replace(m, value=("cross_in_front", {}))
@@ -2543,7 +2546,7 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
             if tokens[j : j + 1] == ["across"] and _in_front_of_the_ego(tokens, j + 1):
                 kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed across in front of the car")
                 continue
-            unsaid = _front_unsaid(kept[:k], tokens, j + 2) and _subject_before(kept[:k]).value not in from_behind
+            unsaid = _front_unsaid(who, tokens, j + 2) and not _the_one_from_behind(who, from_behind)
             if tokens[j : j + 2] == ["in", "front"] and not overtakes_too and unsaid:
                 kept[k] = replace(m, value=("cross_in_front", {}))  # ("passed in front with a metre to spare")
                 continue
@@ -2561,39 +2564,122 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
 #: Words after "in front" that end where the pass goes: the front is then the ego's, left unsaid
 #: ("passed in front with a metre to spare", "passed right in front, missing my bumper").
 _FRONT_ENDS = frozenset((",", ".", ";", "!", "?", "with", "and", "by", "then", "at", "missing", "-"))
+#: Pronouns a walker or rider is told on with in the next sentence ("He passed in front ...").
+_HE_OR_SHE = frozenset(("he", "she", "they"))
+#: Words before a road user's noun that make it a new one, not the one named before ("another cyclist",
+#: "a different cyclist").
+_ANOTHER = frozenset(("a", "an", "another", "different", "other", "second", "some"))
+#: Words that open someone's or something's own back after "behind" ("from behind a parked lorry").
+_OWNER_OPENS = frozenset(("a", "an", "the", "this", "that", "his", "her", "their", "its", "some", "another"))
 
 
-def _front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+def _who_passes(before: list, said: list):
+    """The road user a verb after ``before`` (its clause's mentions before it) is said of, as
+    :func:`_subject_before`, with a walker's or rider's pronoun ("he", "she", "they") read as the last
+    road user named before it in the text (``said``: all its mentions): a narrator's next sentence
+    goes on with "he passed in front ...". A road user right after a relation is its object, not the
+    subject ("a cyclist came out from behind a parked lorry and passed ...": the cyclist passed)."""
+    subject = _subject_before(before)
+    if subject is not None and subject.slot == "actor":
+        k = before.index(subject) - 1
+        while k >= 0 and before[k].slot == "stationary":
+            k -= 1
+        if k >= 0 and before[k].slot == "relation" and subject.start - before[k].end <= 3:
+            return _who_passes(before[:k], said)
+    if subject is None or subject.slot != "pronoun":
+        return subject
+    if subject.words not in _HE_OR_SHE:
+        return None
+    earlier = (x for x in reversed(said) if x.start < subject.start and x.slot == "actor" and x.value != "ego")
+    return next(earlier, None)
+
+
+def _walker_or_rider(who) -> bool:
+    """Whether the road user ``who`` (a mention, or None for the ego itself) is a walker or rider, one
+    that crosses the ego's path where it passes across its front (both pass rules ask this)."""
+    return who is not None and who.slot == "actor" and who.value in _CROSSERS
+
+
+def _someone_between(said: list, x, m) -> bool:
+    """Whether another road user (not the ego) is named between the passes ``x`` and ``m``: then the
+    two are not said of the same one ("a jogger passed in front of us, then a cyclist passed ...")."""
+    low, high = sorted((x.start, m.start))
+    return any(low < y.start < high and y.slot == "actor" and y.value != "ego" for y in said)
+
+
+def _ends_ahead_in_the_egos_lane(tokens: list[str], j: int) -> bool:
+    """Whether the sentence going on at ``tokens[j]`` (after "in front") ends the road user ahead of the
+    ego or in its lane ("... and rode off ahead of me in my lane", "then stayed in my lane"): a pass
+    and pull-in, not a crossing."""
+    rest = []
+    for t in tokens[j:]:
+        if t in SENTENCE_END:
+            break
+        rest.append(t)
+    ahead = any(
+        rest[i : i + 2] == ["ahead", "of"] and rest[i + 2 : i + 3] in [[w] for w in _EGO_WORDS]
+        for i in range(len(rest))
+    )
+    lane = any(rest[i] in ("my", "our") and rest[i + 1 : i + 2] == ["lane"] for i in range(len(rest)))
+    return ahead or lane
+
+
+def _front_unsaid(who, tokens: list[str], j: int) -> bool:
     """Whether "in front" ends at ``tokens[j]`` with no "of" (the ego's front, told by the one whose
-    story it is), said of a walker or rider (``before``: its clause's mentions before the verb). A
-    vehicle that passes in front with no one named may be pulling in ahead of the ego; a walker or
-    rider is going across its front."""
-    subject = _subject_before(before)
-    walker = subject is not None and subject.slot == "actor" and subject.value in _CROSSERS
-    return walker and (j >= len(tokens) or tokens[j] in _FRONT_ENDS)
+    story it is), said of a walker or rider ``who`` (:func:`_walker_or_rider`). A vehicle that passes
+    in front with no one named may be pulling in ahead of the ego; a walker or rider is going across
+    its front, unless what follows ends it ahead in the ego's lane (:func:`_ends_ahead_in_the_egos_lane`)."""
+    ends = j >= len(tokens) or tokens[j] in _FRONT_ENDS
+    return _walker_or_rider(who) and ends and not _ends_ahead_in_the_egos_lane(tokens, j)
 
 
-def _past_the_front_unsaid(before: list, tokens: list[str], j: int) -> bool:
+def _past_the_front_unsaid(who, tokens: list[str], j: int) -> bool:
     """Whether "past the front" is said at ``tokens[j]`` with no owner ("went past the front a metre
-    off the bumper") of a road user that is no vehicle (``before``: its clause's mentions before the
-    verb): the front of the one whose story it is, the ego's."""
-    subject = _subject_before(before)
-    if subject is not None and subject.slot == "actor" and subject.value in VEHICLES:
+    off the bumper") of a walker or rider ``who`` (:func:`_walker_or_rider`): the front of the one
+    whose story it is, the ego's. An owner may follow a coordination ("past the front and then the
+    back of the parked bus"): that front is the owner's."""
+    if not _walker_or_rider(who) or tokens[j : j + 3] != ["past", "the", "front"]:
         return False
-    return tokens[j : j + 3] == ["past", "the", "front"] and tokens[j + 3 : j + 4] != ["of"]
+    rest = []
+    for t in tokens[j + 3 : j + 10]:
+        if t in SENTENCE_END or t == ",":
+            break
+        rest.append(t)
+    owned_after = rest[:1] in (["and"], ["or"]) and "of" in rest
+    return rest[:1] != ["of"] and not owned_after
 
 
-def _said_from_behind(clauses: list) -> set:
-    """The kinds of road user said to come "from behind" the ego (a ``behind`` relation right after
-    its noun and verb): one that then passes in front, the ego left unsaid, is overtaking it."""
-    kinds = set()
+def _said_from_behind(clauses: list, tokens: list[str]) -> list:
+    """The road users (their mentions) said to come "from behind" the ego: a ``behind`` relation said of
+    it (the last road user named before it), with no one else's back after it ("came out from behind a
+    parked lorry" is behind the lorry). One that then passes in front, the ego unsaid, overtakes it."""
+    found = []
     for _, mentions in clauses:
         for k, m in enumerate(mentions):
-            if m.slot == "relation" and m.value == "behind":
-                subject = _subject_before(mentions[:k])
-                if subject is not None and subject.slot == "actor":
-                    kinds.add(subject.value)
-    return kinds
+            if m.slot != "relation" or m.value != "behind":
+                continue
+            subject = _subject_before(mentions[:k])
+            if subject is None or subject.slot != "actor":
+                continue
+            said = tokens[m.end : m.end + 2]
+            egos = [x for x in mentions[k + 1 :] if x.slot == "actor" and x.value == "ego" and x.start <= m.end + 1]
+            if said[:1] and said[0] in _OWNER_OPENS and said != ["the", "ego"] and not egos:
+                continue
+            found.append(subject)
+    return found
+
+
+def _the_one_from_behind(who, from_behind: list) -> bool:
+    """Whether ``who`` is a road user said to come from behind the ego (``from_behind``): the same
+    mention, or a later one of its kind that is not said to be a new one ("the cyclist", not "another
+    cyclist")."""
+    if who is None:
+        return False
+    return any(
+        s is who
+        or (s.value == who.value and s.start < who.start and who.prev not in _ANOTHER and who.det not in _ANOTHER)
+        for s in from_behind
+    )
 
 
 def _past_the_front(before: list, clauses: list) -> str:
