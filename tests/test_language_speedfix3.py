@@ -24,7 +24,7 @@ def _ego_kph(text: str) -> float:
 @pytest.mark.parametrize(
     "text",
     [
-        "We were doing 30, 35 people were on the pavement, when a kid ran out.",
+        "We were doing 30, 35 people were on the footpath, when a kid ran out.",
         "I was at 30, 40 kids were at the school gate, and one ran out.",
         "I was going 30, 45 degrees to the road, when a car hit me.",
         "We were going 30, 45 cyclists were on the path, when one swerved into the road.",
