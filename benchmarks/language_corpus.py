@@ -85,6 +85,8 @@ FIRST = {
     "language_independent_z32.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
     "language_independent_z33.json": ((50, 50, 12, 48), "sealed for a round of reader work"),
     "language_independent_z34.json": ((50, 50, 2, 44), "sealed for a round of reader work"),
+    "language_independent_z35.json": ((50, 49, 9, 44), "sealed for a round of reader work"),
+    "language_independent_z36.json": ((50, 50, 17, 48), "sealed for a round of reader work"),
 }
 
 

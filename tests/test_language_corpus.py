@@ -101,6 +101,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z32.json": (50, 7),
     ROOT / "tests" / "data" / "language_independent_z33.json": (50, 12),
     ROOT / "tests" / "data" / "language_independent_z34.json": (50, 2),
+    ROOT / "tests" / "data" / "language_independent_z35.json": (49, 9),
+    ROOT / "tests" / "data" / "language_independent_z36.json": (50, 17),
 }
 
 
