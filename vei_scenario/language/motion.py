@@ -47,6 +47,7 @@ from dataclasses import replace
 from vei_scenario.language.clauses import SENTENCE_END
 from vei_scenario.language.cut_back_in import sudden_returns_at_the_ego
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
+from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
 from vei_scenario.language.quantities import OBJECT_PRONOUNS, SECONDS
@@ -2565,7 +2566,7 @@ def passing_in_front(clauses: list, tokens: list[str]) -> list:
 #: ("passed in front with a metre to spare", "passed right in front, missing my bumper").
 _FRONT_ENDS = frozenset((",", ".", ";", "!", "?", "with", "and", "by", "then", "at", "missing", "-"))
 #: Pronouns a walker or rider is told on with in the next sentence ("He passed in front ...").
-_HE_OR_SHE = frozenset(("he", "she", "they"))
+_HE_OR_SHE = SUBJECT_PRONOUNS - FIRST_PERSON - {"you"}  # (he, she, they: the third persons)
 #: Words before a road user's noun that make it a new one, not the one named before ("another cyclist",
 #: "a different cyclist").
 _ANOTHER = frozenset(("a", "an", "another", "different", "other", "second", "some"))
