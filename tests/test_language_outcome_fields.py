@@ -79,7 +79,8 @@ def test_a_denied_field_is_no_contact_made():
         ("Car cuts in. Critical: no. Ego 50 km/h.", None),
         ("A cyclist was hit by a van and is in critical condition.", "collision"),
         ("It is critical that the ego brakes for the child crossing.", None),
-        ("The scenario is not critical: a cyclist rides along the kerb.", None),
+        # (a criticality denied says nothing came close: a safe pass, see test_language_intent5)
+        ("The scenario is not critical: a cyclist rides along the kerb.", "safe"),
         ("Truck overtakes. Severity: critical. Contact: yes.", "collision"),
         ("The critical moment came when the bus pulled out in front of me.", None),
         # a contact is what happened: it outranks a rating of how close it came

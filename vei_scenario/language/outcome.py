@@ -344,15 +344,17 @@ _TO_FURNITURE = frozenset(("into", "onto", "against", "straight", "right", "up",
 def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> bool:
     """Whether the contact verb at ``i`` hits street furniture (its object's head) while its sentence
     so far tells of escaping someone ("I swerved to miss him and hit the kerb", "swerved into the
-    hedge to miss him"), or the one who hits it is a walker or a rider ("a lad on a scooter came off
-    the pavement, hit the kerb", "she wobbled, clipped the curb and came off"): their own fall, no
-    contact with the ego (a vehicle that "hit the kerb and rolled" may be the ego's own crash)."""
+    hedge to miss him") or a move forced on its doer ("had to pull in to the hedge, scraped it"), or
+    the one who hits it is a walker or a rider ("a lad on a scooter came off the pavement, hit the
+    kerb", "she wobbled, clipped the curb and came off"): their own fall, no contact with the ego (a
+    vehicle that "hit the kerb and rolled" may be the ego's own crash)."""
     skip = _DETERMINERS | _POSSESSIVES | _TO_FURNITURE
     head = next((w for w in words[i + 1 : i + 6] if w not in skip), "")
     if head not in _FURNITURE:
         return False
     escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
-    return escaping or _walker_or_rider_before(sentence[: len(sentence) - len(words) + i])
+    forced = any(sentence[k : k + 2] == ["had", "to"] for k in range(len(sentence) - len(words) + i))
+    return escaping or forced or _walker_or_rider_before(sentence[: len(sentence) - len(words) + i])
 
 
 #: The kinds of road user that are walkers or riders: never the ego's own vehicle.
@@ -875,12 +877,18 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return False  # ("into the right lane", "into our path")
     if _no_thing_met(chunk):
         return False  # ("into the crosswalk", "gone into the dark", "tucked into the sun visor")
+    if set(chunk) & _HOLLOWS:
+        return False  # ("front wheel into a pothole": a hollow of the road ridden into, nothing met)
     if chunk[-1] in _FITTED_PARTS:
         return True  # ("went into the rear passenger door": a part only a vehicle has, its owner unsaid)
     if set(chunk) & _PARTS:
         return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
     nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
     return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
+
+
+#: Hollows in the road's surface a wheel goes into: ridden into, not met.
+_HOLLOWS = frozenset(("pothole", "potholes", "puddle", "puddles", "rut", "ruts"))
 
 
 def _owned_part(chunk: list[str], rest: list[str]) -> bool:
@@ -1300,6 +1308,9 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
     ):
         metres = _length_said(words[max(0, i - 4) : i + 6])
         return None if metres is None else NEAR_MISS if metres <= 1.0 else SAFE if metres >= 1.5 else None
+    left = _stop_left(words, i, lead)
+    if left is not None:
+        return left
     if w in _LENGTH_UNITS | _SMALL_UNITS and i + 1 < len(words):
         k = i + 1
         if words[k] == "or" and k + 2 < len(words):
@@ -1339,7 +1350,7 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
                     return NEAR_MISS  # ("stopped two metres off his door", "a foot from him")
     if w in ("before", "back") and i > 0 and words[i - 1] in _WELL and _stop_before_someone(words, i):
         return SAFE  # ("stopped well before her", "pulled up well back from him": a wide margin)
-    if w == "short" and i > 0 and not _short_of_a_marking(words, i):
+    if w == "short" and i > 0 and not _short_of_a_marking(words, i) and not _measured_before(words, i):
         if any(_lemmas(x) & {"stop", "pull", "come", "halt"} for x in words[max(0, i - 7) : i]):
             # (by a wide margin: "well short", "comfortably short", "a long way short")
             wide = words[i - 1] in _WELL or words[i - 2 : i] in (
@@ -1354,6 +1365,65 @@ def _margin(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) ->
         if any(_lemmas(x) & {"stop", "miss", "pass", "clear", "halt"} for x in before) or "by" in before:
             return NEAR_MISS
     return None
+
+
+#: Where a measured stop leaves the stopper from the one it stopped for ("stopped 1 m behind it",
+#: "halts 6 m short", "came to a stop 8 m before the dummy").
+_STOPPED_FROM = frozenset(("behind", "short", "before", "from", "back"))
+#: The least length of a stop with room to spare: a few metres or less is close, several are not.
+_ROOMY_METRES = 4.0
+
+
+def _measured_before(words: list[str], i: int) -> bool:
+    """Whether the word at ``i`` comes right after a length ("6 m short"): the length says the margin."""
+    return i > 0 and words[i - 1] in _UNIT_METRES and _length_said(words[max(0, i - 4) : i]) is not None
+
+
+def _stop_left(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ()) -> str | None:
+    """The margin a stop leaves, told as a length at the unit ``words[i]`` and where it left the
+    stopper ("the ego stops about 1 m behind", "halted 6 m short of him", "came to a stop 8 m before
+    the dummy"): a verb or noun of stopping before it in its clause. A few metres or less is a near
+    miss; several metres (:data:`_ROOMY_METRES` or more) is ``room``: the stop had room to spare, a
+    safe pass unless an emergency stop or a swerve is said with it (see :func:`decide`). A hard stop
+    or a swerve said before it in its sentence (``lead``: the sentence before the clause; "which
+    braked hard and stopped 6 m short of it") makes any length the end of an emergency stop: a near
+    miss. Not a length to a place, a line or in a queue ("stopped 5 m behind the van at the lights",
+    "2 m short of the stop line"): where one waits, no margin."""
+    if words[i] not in _UNIT_METRES or words[i + 1 : i + 2] == [] or words[i + 1] not in _STOPPED_FROM:
+        return None
+    stopped = any(
+        _lemmas(x) & {"stop", "halt"} or (_lemmas(x) & {"pull"} and words[k + 1 : k + 2] == ["up"])
+        for k, x in enumerate(words[max(0, i - 8) : i], start=max(0, i - 8))
+    )
+    metres = _length_said(words[max(0, i - 3) : i + 1])
+    if not stopped or metres is None:
+        return None
+    k = i + 2 + (words[i + 1] in ("short", "back") and words[i + 2 : i + 3] in (["of"], ["from"]))
+    obj = []
+    for x in words[k : k + 6]:
+        if x in CLAUSE_BREAKS or (x in PHRASE_ENDS and obj):
+            break
+        obj.append(x)
+    if set(obj) & (_EDGES_AND_LINES | _QUEUE | _STOPPING_MARKINGS) or set(words[k : k + 8]) & _QUEUE:
+        return None  # ("stopped 5 m behind the car at the lights", "3 m before the stop line": a place)
+    if words[i + 1] in ("from", "back") and not obj:
+        return None  # ("stopped 5 m back": from what is not said)
+    if metres <= 3.0 or _hard_stop_said([*lead, *words[:i]]):
+        return NEAR_MISS
+    return "room" if metres >= _ROOMY_METRES else None
+
+
+def _hard_stop_said(before: list[str]) -> bool:
+    """Whether ``before`` says a hard stop or a swerve not denied ("braked hard", "slammed on",
+    "an emergency stop"; not "no hard braking")."""
+    for k, x in enumerate(before):
+        if set(before[max(0, k - 2) : k]) & {"no", "not", "without", "never"}:
+            continue
+        if _is_verb(x) and _lemmas(x) & _EVADE:
+            return True
+        if x in _HARD and any(_lemmas(y) & _BRAKE for y in before[max(0, k - 2) : k + 3]):
+            return True
+    return False
 
 
 #: The road markings a stop is made at: a stop or give-way line, the yellow box of a junction. (A
@@ -2625,7 +2695,8 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe" if w == "clear" else "unharmed")  # ("All clear."; "all fine": how it left them)
             if _miss(words, i):
-                add("contact" if _denied_before(words, i) else "near")  # ("did not miss him")
+                by = "by" in words[i + 1 : i + 5]  # ("missed my handlebars by this much": told by its margin)
+                add("contact" if _denied_before(words, i) and not by else "near")  # ("did not miss him")
                 continue
             if _close_ttc(words, i):
                 add("near")
@@ -2637,7 +2708,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
                 add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
             elif margin is not None:
-                add("near" if margin == NEAR_MISS else "safe")
+                add("near" if margin == NEAR_MISS else margin if margin == "room" else "safe")
             hedge = w in HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
             if hedge and (_hedged_act(words, i) or _hedge_after_escape(words, i)):
                 add("hedged")
@@ -2675,6 +2746,10 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 add("unharmed")  # ("nothing happened", "Nothing dramatic": nothing of note)
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
+            if w in _CLEARED and _gone_before_arrival(whole, at + i):
+                add("safe")  # ("he was gone before I got there": the way was clear when the ego came)
+            if w in ("critical", "criticality") and _denied_before(words, i):
+                add("safe")  # ("not critical", "nothing critical", "no criticality": nothing came close)
             before = whole[: at + i]  # (its sentence up to this word, with its conjunctions)
             if w == "clear" and i > 0 and words[i - 1] in _COPULA and set(before[-8:]) & _ONCE:
                 add("safe")  # ("pulled out once the road was clear", "held back until it was clear")
@@ -2727,6 +2802,42 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
     return cues
 
 
+#: What a road user that has left the way is, or has done ("was gone", "was already across", "had cleared").
+_CLEARED = frozenset(("gone", "across", "past", "through", "clear", "cleared", "crossed", "passed", "over", "side"))
+#: Verbs (lemmas) of coming to where the other had been ("before I got there", "when we arrived").
+_ARRIVING = frozenset(("get", "arrive", "reach", "come"))
+#: Adverbs between the auxiliary and what the road user had become ("was long gone", "was already across").
+_BY_THEN = frozenset(("already", "long", "well", "safely", "just", "all"))
+
+
+def _gone_before_arrival(whole: list[str], k: int) -> bool:
+    """Whether the word at ``k`` of the sentence ``whole`` says that another road user, its subject
+    (a third person or a road user's noun), had left the way before the ego came to it ("he was gone
+    before I got there", "she was already on the other side when we arrived", "by the time we got
+    there the bus had cleared"): the two never met, a safe pass. Not "was gone before I could brake"
+    (the ego did not arrive: it had no time to act)."""
+    j = k - 1 - 3 * (whole[k] == "side" and whole[k - 3 : k] == ["on", "the", "other"])  # ("on the other side")
+    while j >= 0 and whole[j] in _BY_THEN:
+        j -= 1
+    if j < 1 or whole[j] not in ("was", "were", "had", "'d", "is", "are", "'s"):
+        return False
+    subject = whole[j - 1]
+    if subject not in SUBJECT_PRONOUNS - {"i", "we", "you"} and not _road_user_word(subject):
+        return False
+    earlier = whole[max(0, j - 9) : j - 1]  # ("by the time I got there she was gone")
+    if "time" in earlier and earlier[max(0, earlier.index("time") - 2) :][:2] == ["by", "the"]:
+        t = earlier.index("time")
+        if earlier[t + 1 : t + 2] and earlier[t + 1] in _EGO_HEADS:
+            return any(_is_verb(x) and _lemmas(x) & _ARRIVING for x in earlier[t + 2 : t + 5])
+    after = whole[k + 1 : k + 9]
+    at = next((n for n, x in enumerate(after) if x in ("before", "when")), None)
+    if at is None and "time" in after and after[max(0, after.index("time") - 2) :][:2] == ["by", "the"]:
+        at = after.index("time")  # ("by the time I got there")
+    if at is None or not after[at + 1 : at + 2] or after[at + 1] not in _EGO_HEADS:
+        return False
+    return any(_is_verb(x) and _lemmas(x) & _ARRIVING for x in after[at + 2 : at + 5])
+
+
 @lru_cache(maxsize=1)
 def _condition_words() -> frozenset[str]:
     """The one-word names of the weather and the time of day in the lexicon ("dry", "overcast", "dusk")."""
@@ -2769,7 +2880,10 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
     while a lady crossed"), or a signal that sends a person on ("waved me through", "flashed us
     across"). ``rest``: its sentence after it, conjunctions kept. Whoever does it, it is giving way.
     Not a participle ("a man waiting to cross" is where he is), a stay in a queue or at the lights
-    (one's turn, not another's), nor a stay for something else ("waited for a gap")."""
+    (one's turn, not another's), nor a stay for something else ("waited for a gap"). A stay behind
+    someone or something until another has gone by ("stays behind the cyclist until the oncoming car has
+    passed") waits for that other, and so does a slowing until another has ("slows behind the walker
+    until the lorry has passed")."""
     w = words[i]
     if w.endswith("ing") or _denied_before(words, i) or forgone(words, i):
         return False  # ("waiting at the corner", "didn't wait for me", "instead of waiting")
@@ -2777,14 +2891,20 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
     if lem & _SIGNALLING:
         k = 1 if rest[:1] in (["the"], ["a"]) else 0
         return len(rest) > k + 1 and names_road_user(rest[k : k + 1]) and rest[k + 1] in _ONWARD
-    if not lem & _STAYING or set(rest[:8]) & _QUEUE:
+    held = bool(lem & {"slow"}) and bool(set(rest[:6]) & {"until", "till"})  # ("slows until the lorry has passed")
+    if not (lem & _STAYING or held) or set(rest[:8]) & _QUEUE:
         return False
     k = 0
     while k < len(rest) and (rest[k] in _STAYING_FILLERS or (rest[k].endswith("ly") and rest[k] != "only")):
         k += 1
     nxt, obj = (rest[k], rest[k + 1 : k + 5]) if k < len(rest) else ("", [])
-    if nxt in ("for", "behind"):
-        return names_road_user(obj[:3])  # ("waited for him"; not "waited for a gap")
+    if nxt in ("for", "behind") and names_road_user(obj[:3]):
+        return True  # ("waited for him"; not "waited for a gap")
+    if nxt == "behind":
+        k = next((j for j in range(k + 1, min(len(rest), k + 6)) if rest[j] in _WHILE), None)
+        if k is None:
+            return False
+        nxt, obj = rest[k], rest[k + 1 : k + 5]  # ("stayed behind until the oncoming car had passed")
     if nxt in _WHILE and obj:
         moved = any(_is_verb(x) and _lemmas(x) & _GOING_BY for x in obj[1:4])  # ("while Mrs Reid crossed")
         return obj[0] in SUBJECT_PRONOUNS or names_road_user(obj[:3]) or moved  # ("while she crossed")
@@ -2884,6 +3004,10 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
             kinds.add("evade")
     if "critical" in kinds and "contact" not in kinds:
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
+    if "room" in kinds:  # (a stop with several metres left: room to spare, unless it was an emergency)
+        kinds.discard("room")
+        if not kinds & {"evade", "lucky", "late"}:
+            kinds.add("safe")
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
         forced = sudden or intruded or kinds & {"evade", "brake"}
