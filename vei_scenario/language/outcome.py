@@ -1413,6 +1413,10 @@ def _stop_left(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ())
     return "room" if metres >= _ROOMY_METRES else None
 
 
+#: Verbs of escape that are one only said of the pedal ("stood on the brakes", "jumped on them").
+_ON_THE_PEDAL = frozenset(("slam", "stamp", "jump", "stand", "jam"))
+
+
 def _hard_stop_said(before: list[str]) -> bool:
     """Whether ``before`` says a hard stop or a swerve not denied ("braked hard", "slammed on",
     "an emergency stop"; not "no hard braking")."""
@@ -1420,7 +1424,8 @@ def _hard_stop_said(before: list[str]) -> bool:
         if set(before[max(0, k - 2) : k]) & {"no", "not", "without", "never"}:
             continue
         if _is_verb(x) and _lemmas(x) & _EVADE:
-            return True
+            if not _lemmas(x) & _ON_THE_PEDAL or "on" in before[k + 1 : k + 3]:
+                return True  # ("swerved", "slammed on"; not "a van stands still", "the rider jumps off")
         if x in _HARD and any(_lemmas(y) & _BRAKE for y in before[max(0, k - 2) : k + 3]):
             return True
     return False
@@ -2705,6 +2710,8 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 add("safe")
                 continue
             margin = _margin(words, i, sentence[: len(sentence) - len(words)])
+            if margin == "room" and _hard_stop_said([x for ws in raw[:said_in] for x in ws]):
+                margin = NEAR_MISS  # ("full braking at 8 m/s². ... stops 6.4 m short": an emergency stop's end)
             if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
                 add("contact")  # ("could not stop in time", "failed to pull up in time": it was not avoided)
             elif margin is not None:
