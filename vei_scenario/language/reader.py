@@ -45,6 +45,7 @@ from vei_scenario.language import (
     follower_start,
     from_cover,
     generic_ego,
+    heading,
     heading_named,
     held_pass,
     junctions,
@@ -3012,6 +3013,7 @@ def _read(text: str) -> Reading:
     r.intent = decide(cues, sudden, intruded, entered)  # (the outcome reader alone decides contact: not "hit the horn")
     actors = said_again.merge_said_again(actors, r)  # ("a car ran the red. This guy in a red SUV ...": one)
     actors = heading_named.merge_heading_named(actors, r, scanned)  # ("Scenario: Van brakes. When a van ...")
+    actors = heading.fold_told_again(actors, r, heading.heading_end(text, scanned, _tokens))  # (a title line)
     afoot = False  # (the writer on foot in the scene, in no vehicle of their own)
     if not ego_named:
         outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
