@@ -31,6 +31,7 @@ from functools import lru_cache
 
 from vei_scenario.language import (
     access_pull_out,
+    across_alone,
     addressee,
     bystanders,
     crossing_reaction,
@@ -1912,6 +1913,7 @@ def _read(text: str) -> Reading:
     clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
     clauses = lane_to_front.into_the_lane_in_front(clauses, scanned)  # ("in the left lane came in front of me")
     clauses = way_across.to_the_other_side(way_across.over_the_road(clauses, scanned), scanned)  # ("over the road")
+    clauses = across_alone.across_alone(clauses, scanned)  # ("out from between the vans, straight across")
     clauses = scenery.standing_there(chains(clauses, scanned), scanned)  # ("there's a car stopped dead")
     clauses = lane_moves.cut_up(clauses, scanned)  # ("cut me up": into the lane in front, not across)
     clauses = lane_moves.braking_after_a_cut_in(clauses, scanned)  # ("cut in and braked": how it settles)
