@@ -33,6 +33,7 @@ from vei_scenario.language import (
     access_pull_out,
     across_alone,
     addressee,
+    behind_a_thing,
     bystanders,
     crossing_reaction,
     crowds,
@@ -45,6 +46,7 @@ from vei_scenario.language import (
     experiencer,
     follower_start,
     from_cover,
+    fronted_from,
     generic_ego,
     heading,
     heading_named,
@@ -2275,6 +2277,14 @@ def _read(text: str) -> Reading:
                     who.passed = True  # ("the ego overtakes a cyclist")
                 if role == "verb" and isinstance(who, _Actor) and isinstance(clause_subject, _Actor) and after_verb:
                     who.object_of = who.object_of or clause_subject
+                elif (
+                    isinstance(who, _Actor)
+                    and isinstance(clause_subject, _Actor)
+                    and who is not clause_subject
+                    and _passed_object(scanned, mentions, k)
+                ):  # ("overtook a slow lorry", "an overtake of a slow-moving HGV": what it passes)
+                    who.acted_on = True
+                    who.object_of = who.object_of or clause_subject
                 named.append((who, role))
                 resolved[m.start] = who
                 if role == "subject":
@@ -2461,6 +2471,19 @@ def _read(text: str) -> Reading:
                 and nxt.slot == "actor"
                 and scenery.plain_modifiers(scanned, m.end, nxt.start, lambda w: w in FUNCTION_WORDS)
             )
+            before_actor = before_actor or (  # (", from the opposite direction a scooter ...": its clause's)
+                m.slot == "relation"
+                and nxt is not None
+                and nxt.slot == "actor"
+                and fronted_from.fronted_before(
+                    m.words,
+                    m.end,
+                    nxt.start,
+                    scanned,
+                    prev is not None and prev.slot == "punct" and prev.value == ",",
+                    lambda w: w in FUNCTION_WORDS or w in _PLACE_PREPOSITIONS,  # ("from behind the bus": its object)
+                )
+            )
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
                 pending.append(m)  # an adjective before its actor ("an oncoming car")
             elif (
@@ -2590,6 +2613,13 @@ def _read(text: str) -> Reading:
                         m, who, clause_subject, named, scanned, first_person
                     ):
                         r.ego_speed_mps = m.value  # ("a kid shot out in front of me, hit him at 25": the narrator hit)
+                    elif (
+                        m.slot == "relation"
+                        and m.value == "behind"
+                        and isinstance(who, _Actor)
+                        and behind_a_thing.behind_a_thing(scanned, m.words, m.start, m.end, road_users)
+                    ):
+                        who.said.add("near_other")  # ("a van stopped behind a fallen tree": not the ego's rear)
                     else:
                         _apply(m, who, r, link, added)
                     if isinstance(who, _Actor) and _in_front_of_the_ego(m, nxt, who.behaviours, mentions, scanned):
@@ -4044,6 +4074,27 @@ def _placed_object_before(mentions, k: int) -> bool:
     while j >= 0 and mentions[j].slot in _PLACEMENTS:
         j -= 1
     return j < placed and j >= 0 and mentions[j].slot == "actor" and mentions[j].value != "ego"
+
+
+#: Words that may stand between a verb or noun of passing and what it passes ("overtook a", "an overtake of the").
+_BEFORE_THE_PASSED = frozenset(("a", "an", "the", "of"))
+
+
+def _passed_object(tokens: list[str], mentions, k: int) -> bool:
+    """Whether the road user named by ``mentions[k]`` is what a verb or noun of passing right before it
+    passes, past the speed adjectives of its noun phrase ("overtook a slow lorry") or the "of" of a noun
+    of passing ("commenced an overtake of a slow-moving HGV"): the object, as right after the verb
+    ("overtook a lorry"), which the speed adjective or the noun's "of" hides from a reading of the mention
+    right before it."""
+    j, start = k - 1, mentions[k].start
+    while j >= 0 and mentions[j].slot == "speed_adjective" and mentions[j].end >= start - 1:
+        start, j = mentions[j].start, j - 1
+    if j < 0:
+        return False
+    between = tokens[mentions[j].end : start]
+    if j == k - 1 and "of" not in between:
+        return False  # (nothing hidden between: the plain object is read where it is named)
+    return motion.passes(mentions[j]) and len(between) <= 3 and all(w in _BEFORE_THE_PASSED for w in between)
 
 
 def _nearest(named, m):
