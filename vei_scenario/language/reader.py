@@ -300,6 +300,7 @@ class _Actor:
     out_of_place: bool = False  # said to come out of a place beside the road (a driveway, a stop, a gate)
     place: str | None = None  # the head noun of that place ("driveway", "gate", "stop", "park")
     far_side: bool = False  # said to come from the other side ("from the opposite side")
+    left_the_kerb: bool = False  # its kerb side said as where it comes from ("off the pavement on the left")
     followed: bool = False  # the ego follows it ("Following a truck, ...")
     object_of: _Actor | None = None  # whose verb it is the object of ("overtakes a bus": the bus)
     goes_on: bool = False  # said not to give way, stop or slow ("does not yield", "fails to stop")
@@ -1266,6 +1267,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             det = det or (_phrase_determiner(tokens, i) if slot == "actor" else "")  # ("the injured cyclist")
             if slot in ("kerb", "kerb_side"):
                 prev = _before_a_described_place(tokens, i) or prev  # ("off the dropped kerb": "off")
+            if slot == "kerb_side":  # ("nearside", "the other side" read bare: the writer's near or far kerb)
+                value = sides.kerb_side_of_the_writer(words, value, left_hand)
             clauses[-1][1].append(_Mention(slot, value, words, i, prev, nxt, i + used, det))
         if adverb is not None and (adverb,) in TABLE and TABLE[(adverb,)][0] in ("criticality", "speed_word"):
             a_slot, a_value = TABLE[(adverb,)]
@@ -2504,6 +2507,16 @@ def _read(text: str) -> Reading:
                 who = _nearest(named, m)
                 if sides.owners_side(m, prev) and isinstance(clause_subject, _Actor) and who is not clause_subject:
                     who = clause_subject  # ("a van came from the Civic's right": the van's side, not the Civic's)
+                elif (
+                    isinstance(clause_subject, _Actor)
+                    and clause_subject.kind in VULNERABLE
+                    and isinstance(who, _Actor)
+                    and who is not clause_subject
+                    and sides.crosses_from_beside_a_landmark(
+                        m, clause_subject.behaviours, bool(named) and named[-1][0] is who and named[-1][1] != "subject"
+                    )
+                ):
+                    who = clause_subject  # ("crossed in front of the bus from the left": she comes from the left)
                 elif sides.owners_side(m, prev) and clause_subject == "ego" and m.value in _OTHER_SIDE:
                     # ("the ego came from the SUV's right": the SUV is on the ego's left)
                     m = replace(m, value=_OTHER_SIDE[m.value])
@@ -3612,8 +3625,9 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
     """Vehicles parked at the side of the road (standing, said to be on a side or at the kerb, not
     in a lane of the ego's) stand beyond the kerb, where they hide someone who crosses from there;
     a crossing whose side is only said of the parked vehicles ("from between two parked vans on the
-    left") starts from that side."""
-    parked_sides = []
+    left") starts from that side. Parked vehicles of no side said do not outvote those of a side said
+    ("between parked cars ... from behind a parked van on the left": from the left)."""
+    parked_sides, sides_said = [], set()
     for a, spec in zip(actors, specs):
         if a.kind not in VEHICLES or spec.speed_mps != 0.0:
             continue
@@ -3623,6 +3637,9 @@ def _parked(actors: list[_Actor], specs: list[ActorSpec]) -> None:
         if spec.relation in ("left", "right", None) and (side or a.kerb or a.parked) and (a.parked or not a.lane_side):
             spec.relation = f"roadside_{side or 'right'}"
             parked_sides.append(side or "right")
+            sides_said |= {side} if side in ("left", "right") else set()
+    if len(sides_said) == 1:
+        parked_sides = [*sides_said]
     if len(set(parked_sides)) != 1:
         return
     for a, spec in zip(actors, specs):
@@ -4302,8 +4319,11 @@ def _apply(m, who, r, link, added) -> None:
             a.wrong_way = True  # ("a biker came from wrong side, straight towards my car")
         elif m.slot == "kerb_side" and sides.where_it_goes(m.value, m.words, m.prev, m.next_) and not _verb_with_to(a):
             a.goes_to = a.goes_to or m.value  # ("ran across towards the left kerb": where it ends, not starts)
+        elif m.slot == "kerb_side" and a.left_the_kerb and not _from(m):
+            pass  # ("came off the pavement on the left ... to his mates on the other side": where it comes from)
         elif m.slot == "kerb_side":
             a.kerb, a.kerb_side = True, m.value
+            a.left_the_kerb = _from(m)
             a.along = a.along or kerb_ride.along_the_edge(m.prev)
             a.own_lane = a.own_lane or "lane" in m.words.split()
             a.edge = a.edge or (None if "lane" in m.words.split() else m.value)  # (a cycle lane is a lane)

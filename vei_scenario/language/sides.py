@@ -30,6 +30,7 @@ from functools import lru_cache
 
 from lemminflect import getInflection
 
+from vei_scenario.language import lexicon as L
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.vocabulary import GENDERED
 from vei_scenario.language.vocabulary import STREET_WORDS as _STREET_WORDS
@@ -483,6 +484,21 @@ def _tense(word: str) -> str | None:
     if any(word != v and word in getInflection(v, "VBD") for v in verbs):
         return "past"
     return None
+
+
+#: The lexicon's bare near and far kerb words, with the side each names where traffic keeps right.
+_BARE_KERB_SIDES = {**dict.fromkeys(L.NEARSIDE, "right"), **dict.fromkeys(L.FARSIDE, "left")}
+
+
+def kerb_side_of_the_writer(words: str, side: object, left_hand: bool) -> object:
+    """The side a kerb side word read bare names ("child from behind parked cars, nearside", "to the
+    other side"): the writer's near kerb or far one, as :func:`near_and_far` says for their side of the
+    road; a plain side said ("from the left kerb") stays. Why: read as a word of its own, "nearside" had
+    the right-hand convention's side, and a British writer's child from the nearside came from the right."""
+    if words not in _BARE_KERB_SIDES or side != _BARE_KERB_SIDES[words]:
+        return side
+    near, far = near_and_far(left_hand)
+    return near if side == "right" else far
 
 
 def near_and_far(left_hand: bool) -> tuple[str, str]:
@@ -1786,4 +1802,19 @@ def owners_side(m, owner) -> bool:
         and owner.prev == "from"
         and owner.value != "ego"
         and owner.end == m.start - 1
+    )
+
+
+def crosses_from_beside_a_landmark(m, subject_acts: list, landmark_named_after: bool) -> bool:
+    """Whether side mention ``m`` ("from the left") says where the clause's subject crosses from rather
+    than where the road user named last is: the subject's latest act a crossing, the other named after
+    that verb as its landmark ("a woman crossed in front of the bus from the left"). Why: "from the
+    left" goes with the verb of motion; the vehicle she crosses before is where she passes, and read as
+    the vehicle's, her own side was lost and she came from the near kerb."""
+    return (
+        m.slot == "side"
+        and m.words.split()[0] == "from"
+        and landmark_named_after
+        and bool(subject_acts)
+        and subject_acts[-1][0] == "cross_in_front"
     )
