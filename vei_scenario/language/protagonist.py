@@ -54,10 +54,20 @@ from vei_scenario.language.ego import (
     sentence_span,
     stands_parked,
 )
+from vei_scenario.language.function_words import DETERMINERS
 from vei_scenario.language.lemmas import lemmas
 
 #: Verbs of the reaction a report gives the vehicle it is about (lemmas), a closed class.
 REACTING = frozenset({"brake", "stop", "swerve", "slow", "steer", "halt", "decelerate", "skid", "stamp"})
+#: Verbs (lemmas) of pressing with force that tell a braking when what they press is the brakes, said
+#: or left unsaid ("slammed on", "hit the brakes", "stood on everything"), a closed class.
+PRESSING = frozenset({"slam", "jam", "stamp", "stomp", "stand", "mash", "hit"})
+#: What such a verb presses when it brakes: the brakes, by name or as everything there is to press.
+PRESSED = frozenset({"brake", "brakes", "anchors", "everything"})
+#: The nouns of the stop a verb of motion comes to ("eased to a stop", "came to a standstill").
+STOP_NOUNS = frozenset({"stop", "halt", "standstill"})
+#: Words that may stand between "to a" and the stop ("to a full stop", "to a dead halt").
+WHOLE_STOP = frozenset({"full", "complete", "dead", "sudden", "quick", "rapid", "abrupt"})
 #: Words that may stand between a road user and its reaction ("braked hard", "had to stop", "was
 #: forced to swerve", "then braked"): auxiliaries, "to" and adverbs.
 BEFORE_VERB = frozenset(
@@ -203,8 +213,40 @@ def _verb_of_reacting(tokens: list[str], k: int) -> int:
         if w in BEFORE_VERB or (w.endswith("ly") and "ADV" in lemmas(w)):
             k += 1
             continue
-        return k if "VERB" in lemmas(w) and any(x in REACTING for x in lemmas(w)["VERB"]) else 0
+        verbs = lemmas(w).get("VERB", ())
+        said = any(x in REACTING for x in verbs) or _to_a_stop(tokens, k + 1)
+        return k if verbs and (said or (PRESSING & set(verbs) and _the_brakes(tokens, k + 1))) else 0
     return 0
+
+
+def _the_brakes(tokens: list[str], k: int) -> bool:
+    """Whether what a verb of pressing says from ``k`` on is the brakes: "on" with its object left
+    unsaid ("slammed on and missed him", "had to slam on."), or the brakes themselves past "on" and a
+    determiner ("hit the brakes", "stomped on her brakes", "stood on everything"). A verb of pressing
+    with anything else after it ("slammed into the kerb", "hit the cyclist", "stood on the verge") is
+    no braking."""
+    if tokens[k : k + 1] == ["on"]:
+        k += 1
+        if k >= len(tokens) or tokens[k] in _CLAUSE_ENDS:
+            return True
+    while k < len(tokens) and tokens[k] in DETERMINERS:
+        k += 1
+    return k < len(tokens) and tokens[k] in PRESSED
+
+
+def _to_a_stop(tokens: list[str], k: int) -> bool:
+    """Whether a verb of motion is said to end at ``k`` in a stop ("eased to a stop", "came to a
+    standstill", "rolled to a dead halt"): it stops, whatever verb says how. A stop that names a
+    thing after it ("up to a stop sign") is a place."""
+    if tokens[k : k + 2] != ["to", "a"]:
+        return False
+    k += 2
+    while k < len(tokens) and tokens[k] in WHOLE_STOP:
+        k += 1
+    if k >= len(tokens) or tokens[k] not in STOP_NOUNS:
+        return False
+    after = set(lemmas(tokens[k + 1])) if k + 1 < len(tokens) else set()
+    return "NOUN" not in after or bool(after & {"ADJ", "ADV"})  # (no noun it names: "stop sign")
 
 
 def _struck(tokens: list[str], p) -> bool:
@@ -308,14 +350,18 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
             driver = driver or _Referent("driver", known=True)
             driver.mentions.append(p)
             continue
-        if last in AT_WHEEL:
+        by_vehicle = last in AT_WHEEL  # ("the bus driver": the bus, whatever type "driver" gave the phrase)
+        if by_vehicle:
             if not _drives_vehicle(tokens, p, vehicles):
                 continue
             words = words[:-1]
             last = words[-1]
         same = None
         if p.det not in INDEFINITE:
-            same = next((r for r in reversed(out) if r.kind == p.kind and last in r.words), None)
+            same = next(
+                (r for r in reversed(out) if (r.kind == p.kind or by_vehicle) and last in r.words),
+                None,
+            )
             if same is None:
                 kin = [r for r in out if r.kind == p.kind]
                 same = kin[0] if len(kin) == 1 and p.det in DEFINITE and p.end - p.head == 1 else None
