@@ -370,6 +370,7 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),
             facing=pose.facing,
+            ego_route=str(ego.get("route", "straight")),
         )
         controller = None
         does = [n["behaviour"] for _, n in behaviour_nodes(adv["behaviour"])]

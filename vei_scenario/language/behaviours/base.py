@@ -102,6 +102,8 @@ class ActorContext:
     actor_offset_m: float = 0.0
     #: An earlier behaviour of the actor has given it a route through the junction (a turn there).
     routed: bool = False
+    #: The ego's way through its junction (straight, left, right): what a road user must cross to meet it.
+    ego_route: str = "straight"
 
     def on_another_arm(self) -> bool:
         """Whether the actor starts on another arm of the ego's junction or roundabout (one of the

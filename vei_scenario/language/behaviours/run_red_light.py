@@ -1,5 +1,10 @@
-"""run the red light: drive straight through the crossroad against a red signal, timed to reach
-the ego's path about when the ego does (``arrival_gap_s`` after it; negative: before it)."""
+"""run the red light: drive through the crossroad against a red signal, timed to reach the ego's
+path about when the ego does (``arrival_gap_s`` after it; negative: before it).
+
+It drives straight on, unless straight on never meets the ego's way: from the arm opposite the ego,
+the two pass side by side when the ego goes straight on or turns right, so that runner turns left,
+across the ego's path or into the road the ego turns into (:func:`way_through`). Why: running the red
+is what puts it in the ego's way; a runner that only passes the ego in its own lane is no conflict."""
 
 from __future__ import annotations
 
@@ -33,8 +38,23 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
     actions = [speed_action(ctx.actor_speed_mps)]
     if not ctx.routed:  # (one an earlier behaviour turns at the junction runs the red along that turn)
-        actions.insert(0, route_action(ctx, "straight", own_view=True))
+        way = way_through(ctx)
+        # (a turn leaves on the exit lane its own lane leads to: the arms' lanes are joined one to one)
+        lane = {"exit_lane": abs(ctx.actor_lane_id)} if way != "straight" else {}
+        actions.insert(0, route_action(ctx, way, own_view=True, **lane))
     return [Step("run_red_light", actions, hold_s=through_s(ctx))]
+
+
+def way_through(ctx: ActorContext) -> str:
+    """The runner's way through a crossroad, as it sees it: straight on, or left from the arm opposite
+    the ego when the ego goes straight on or turns right (right-hand traffic: straight on, the runner
+    would only pass the ego side by side; turning left it crosses the ego's way, or merges into the
+    road the ego turns into). Elsewhere, and where the arm has no such exit, straight on."""
+    opposite = ctx.exits.get("straight")
+    if ctx.map_kind == "crossroad" and ctx.actor_road == opposite and ctx.ego_route in ("straight", "right"):
+        if ctx.actor_exits.get("left"):
+            return "left"
+    return "straight"
 
 
 def through_s(ctx: ActorContext) -> float:
