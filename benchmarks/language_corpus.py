@@ -87,6 +87,8 @@ FIRST = {
     "language_independent_z34.json": ((50, 50, 2, 44), "sealed for a round of reader work"),
     "language_independent_z35.json": ((50, 49, 9, 44), "sealed for a round of reader work"),
     "language_independent_z36.json": ((50, 50, 17, 48), "sealed for a round of reader work"),
+    "language_independent_z37.json": ((50, 49, 11, 44), "sealed for a round of reader work"),
+    "language_independent_z38.json": ((50, 50, 3, 47), "sealed for a round of reader work"),
 }
 
 

@@ -103,6 +103,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z34.json": (50, 4),
     ROOT / "tests" / "data" / "language_independent_z35.json": (49, 9),
     ROOT / "tests" / "data" / "language_independent_z36.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z37.json": (49, 11),
+    ROOT / "tests" / "data" / "language_independent_z38.json": (50, 3),
 }
 
 
