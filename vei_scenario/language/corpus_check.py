@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from types import SimpleNamespace
 
+from vei_scenario.language.behaviours.run_red_light import passes_by
 from vei_scenario.language.layers import behaviour_nodes
 
 FORMAT = "vei-language-corpus/1"
@@ -214,7 +215,8 @@ def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
     a crossing passes the ego's path (or is hit in it), a red-light run or a turn across comes within
-    3 m of the ego's path (for an ego that stands, the way it stands to go), a road user giving way
+    3 m of the ego's path (for an ego that stands, the way it stands to go; not a run the text sends
+    straight on past the ego from the opposite arm), a road user giving way
     stands and is not hit, one going along the road keeps to the ego's lane in its direction (while
     both are on the ego's road), a wrong-way driver is head-on on the ego's path, an oncoming one faces
     the ego when they meet; and no background vehicle collides."""
@@ -258,7 +260,11 @@ def played_problems(result, layers: dict) -> list[str]:
             if {"run_red_light", "turn_across", "turn_into", "wrong_way"} & set(names)
             else None
         )
+        runs = [n.get("config", {}) for _, n in behaviour_nodes(adv["behaviour"]) if n["behaviour"] == "run_red_light"]
+        route = str(layers["ego"].get("route", "straight"))
         for crossing in ("run_red_light", "turn_across", "turn_into"):
+            if crossing == "run_red_light" and runs and passes_by(adv["spawn"]["relation"], runs[0].get("turn"), route):
+                continue  # (sent straight on past the ego by the text: side by side, not across its path)
             if crossing in names:
                 d = float(to_path[0].min())
                 if d > 3.0:

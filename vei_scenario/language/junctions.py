@@ -308,6 +308,21 @@ def goes_on_over(name: str, words: str, after: list[str]) -> bool:
     return name in _PLAIN and bool(_OVER & {*words.split(), *after})
 
 
+#: Words after "straight" that make it the way through, not the aim ("straight on", not "straight at me").
+_ON_THROUGH = frozenset(("on", "ahead", "through", "over", "across"))
+
+
+def says_straight_on(name: str, words: str, after: list[str]) -> bool:
+    """Whether a plain move or a run of the red (``name``, said by ``words``, followed by the tokens
+    ``after``) says its way through is straight on ("carried straight on", "went straight through the
+    red"): the text has said the runner's way, and the builder keeps it rather than choosing one that
+    meets the ego. "Straight at me", "straight for us" say where it aims, not its way through."""
+    if name not in _PLAIN and name != "run_red_light":
+        return False
+    said = [*words.split(), *after]
+    return any(w == "straight" and said[k + 1 : k + 2] and said[k + 1] in _ON_THROUGH for k, w in enumerate(said))
+
+
 def pulls_out_to_join(pulled_out: bool, goes_over: bool, names: list[str], relation: str | None, signal: bool) -> bool:
     """Whether a road user said to pull out of a side road on the ego's left or right ("came out of a side
     street without stopping", "emerged from the minor road and failed to give way") joins the ego's road

@@ -334,6 +334,7 @@ class _Actor:
     moves_out: bool = False  # its crossing is said with "out" ("swung out", "pulled out")
     pulled_out: bool = False  # its move is a pull-out of a side road ("came out of", "emerged from")
     goes_over: bool = False  # said to go on over or through ("carried on across", "went straight over")
+    straight_on: bool = False  # its way through said straight on ("carried straight on past me")
     went_by: bool = False  # its verb of passing has no object ("the van has passed", "a lorry went by")
     along: bool = False  # said to go along the road or its edge ("rides along the kerb", "same direction")
     across: bool = False  # its move into a lane is said with "across" ("cut across to the right")
@@ -2647,6 +2648,9 @@ def _read(text: str) -> Reading:
             a.along = a.along or (name == "keep_going" and kerb_ride.goes_along(words))
             end, start = cfg.pop("_end", len(scanned)), cfg.pop("_start", None)
             a.across = a.across or kerb_ride.said_across(name, words, scanned[end:][:2])
+            # (said after its name: a fronted "Driving straight over the crossroads, ..." is the narrator's way)
+            after_name = start is not None and 0 <= a.named_end <= start
+            a.straight_on = a.straight_on or (after_name and junctions.says_straight_on(name, words, scanned[end:][:2]))
             if start is not None:
                 pull_in_apart.mark(name, cfg, scanned, start, end)  # (whether a pull-in is told apart)
             if start is not None and crossing_reaction.said_free(
@@ -3810,6 +3814,8 @@ def _tidy(a: _Actor) -> list:
     out = [(name, pull_in_apart.unmarked(cfg), crit, lk) for name, cfg, crit, lk in out]
     if a.kind != "pedestrian" and any(b[0] == "run_red_light" for b in out):
         out = [b for b in out if b[0] != "cross_in_front"]  # crossing against red is the red-light run
+    if a.straight_on:  # ("jumped the lights and carried straight on": the run's way, the text's, not the builder's)
+        out = [(n, {**c, "turn": "straight"}, k, lk) if n == "run_red_light" else (n, c, k, lk) for n, c, k, lk in out]
     if any(b[0] == "give_way" for b in out):  # "stops at the line and waits for us": giving way stops
         out = [
             b for k, b in enumerate(out) if not (b[0] == "stop" and k + 1 < len(out) and out[k + 1][0] == "give_way")

@@ -1,10 +1,12 @@
 """run the red light: drive through the crossroad against a red signal, timed to reach the ego's
 path about when the ego does (``arrival_gap_s`` after it; negative: before it).
 
-It drives straight on, unless straight on never meets the ego's way: from the arm opposite the ego,
-the two pass side by side when the ego goes straight on or turns right, so that runner turns left,
-across the ego's path or into the road the ego turns into (:func:`way_through`). Why: running the red
-is what puts it in the ego's way; a runner that only passes the ego in its own lane is no conflict."""
+Its way through is the one its ``turn`` says (``straight``, ``left`` or ``right``: what the text says of
+it, "carried straight on past me"). Where nothing says it, it drives straight on, unless straight on
+never meets the ego's way: from the arm opposite the ego, the two pass side by side when the ego goes
+straight on or turns right, so that runner turns left, across the ego's path or into the road the ego
+turns into (:func:`way_through`). Why: running the red is what puts it in the ego's way; a runner that
+only passes the ego in its own lane is no conflict, unless the text says that is what it did."""
 
 from __future__ import annotations
 
@@ -27,6 +29,8 @@ DEFAULT_SPAWN = {"relation": "junction_left"}
 PARAMETERS = {
     "arrival_gap_s": Parameter(0.5, -4.0, 6.0, "when it reaches the ego's path after the ego does (s)"),
 }
+#: Its ``turn`` (a word, as forced_turn's): its way through as it sees it; absent, :func:`way_through` chooses.
+WAYS = ("straight", "left", "right")
 PROFILES = {
     "dangerous": {"arrival_gap_s": (-0.3, 0.3)},
     "moderate": {"arrival_gap_s": (1.0, 1.5)},
@@ -38,23 +42,36 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
     actions = [speed_action(ctx.actor_speed_mps)]
     if not ctx.routed:  # (one an earlier behaviour turns at the junction runs the red along that turn)
-        way = way_through(ctx)
+        # (the way the text says, else one that meets the ego: the maps drive on the right, and
+        # way_through's choice for the opposite arm assumes so)
+        said = cfg.get("turn")
+        way = way_through(ctx, str(said) if said in WAYS else None)
         # (a turn leaves on the exit lane its own lane leads to: the arms' lanes are joined one to one)
         lane = {"exit_lane": abs(ctx.actor_lane_id)} if way != "straight" else {}
         actions.insert(0, route_action(ctx, way, own_view=True, **lane))
     return [Step("run_red_light", actions, hold_s=through_s(ctx))]
 
 
-def way_through(ctx: ActorContext) -> str:
-    """The runner's way through a crossroad, as it sees it: straight on, or left from the arm opposite
-    the ego when the ego goes straight on or turns right (right-hand traffic: straight on, the runner
+def way_through(ctx: ActorContext, said: str | None = None) -> str:
+    """The runner's way through a crossroad, as it sees it: the way ``said`` (the text's) where its arm
+    has that exit; where none is said, straight on, or left from the arm opposite the ego when the ego
+    goes straight on or turns right (right-hand traffic, as the maps are built: straight on, the runner
     would only pass the ego side by side; turning left it crosses the ego's way, or merges into the
     road the ego turns into). Elsewhere, and where the arm has no such exit, straight on."""
+    if said is not None:
+        return said if said == "straight" or ctx.actor_exits.get(said) else "straight"
     opposite = ctx.exits.get("straight")
     if ctx.map_kind == "crossroad" and ctx.actor_road == opposite and ctx.ego_route in ("straight", "right"):
         if ctx.actor_exits.get("left"):
             return "left"
     return "straight"
+
+
+def passes_by(relation: str, said: object, ego_route: str) -> bool:
+    """Whether a runner the text sends straight on (``said``, its ``turn``) from the arm opposite the ego
+    only passes the ego side by side (the ego going straight on or turning right, right-hand traffic):
+    its way never meets the ego's, as the text says, so no run near the ego's path is to be asked of it."""
+    return relation == "junction_opposite" and said == "straight" and ego_route in ("straight", "right")
 
 
 def through_s(ctx: ActorContext) -> float:
