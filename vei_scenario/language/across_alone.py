@@ -30,7 +30,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.discourse import PUNCT, VULNERABLE
-from vei_scenario.language.function_words import CLAUSE_BREAKS
+from vei_scenario.language.function_words import CLAUSE_BREAKS, FIRST_PERSON
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.lexicon import LOOKING_OR_SIGNALLING, OBJECT_PREPOSITIONS
 from vei_scenario.language.settings import NEGATORS
@@ -88,11 +88,15 @@ def _no_going(tokens: list[str], j: int) -> bool:
     return any(k >= 0 and tokens[k] in _DENYING for k in (j - 1, -1 if v is None else v - 1))
 
 
-def _in_front_of_another(mentions: list, k: int, j: int) -> bool:
+def _in_front_of_another(mentions: list, k: int, tokens: list[str], j: int) -> bool:
     """Whether "across" at ``tokens[j]`` is told in front of a road user other than the ego ("then
     across, in front of the van"): the road user named first after it (from mention ``k`` of its
     clause), within the phrase of its front ("in front of the van", "the front of a lorry"). That
-    crossing is not the ego's road crossed before the ego, and the van stays a road user of its own."""
+    crossing is not the ego's road crossed before the ego, and the van stays a road user of its own.
+    Only where the ego is told by a first person before it: in a report with none ("across the front
+    of the bus" told of a bus driver's account) the vehicle may be the ego's own."""
+    if not FIRST_PERSON & set(tokens[:j]):
+        return False
     after = next((m for m in mentions[k:] if m.slot == "actor" or (m.slot == "punct" and m.start > j + 1)), None)
     return after is not None and after.slot == "actor" and after.start <= j + _FRONT_WORDS and after.value != "ego"
 
@@ -155,7 +159,7 @@ def across_alone(clauses: list, tokens: list[str]) -> list:
             continue
         mentions = out[c][1]
         k = next((i for i, m in enumerate(mentions) if m.start > j), len(mentions))
-        if _in_front_of_another(mentions, k, j):
+        if _in_front_of_another(mentions, k, tokens, j):
             continue  # ("across, in front of the van": not the ego's road crossed before it)
         subject = _subject(mentions, k, tokens)
         if subject is None and any(m.slot in ("behaviour", "actor") for m in mentions[:k]):
