@@ -17,24 +17,35 @@ front of the ego ("across behind me", "across the back of the bus"), an "across"
 phrase the reader knows ("walked across", "waved across"), one said of the ego or of a vehicle (a
 vehicle across the ego's path goes through a junction, read elsewhere), a road user whose clause
 already says it crosses, stops or gives way, one that turns ("swings right across the front of my car":
-the way of the turn, read with it), and one said to go on with a going already under way
-("keeps going across in front of us", "carries on across": it is on the road, and its way crosses
-the ego's there, not from a kerb).
+the way of the turn, read with it), one told with a verb of looking, calling or gesturing ("looked
+across", "shouted across": where one looks or calls, no going), one denied ("Not across, just
+waiting"), one in front of another road user than the ego ("then across, in front of the van": not
+the ego's road crossed before it, and the van stays a road user of its own), and one said to go on
+with a going already under way ("keeps going across in front of us", "carries on across": it is on
+the road, and its way crosses the ego's there, not from a kerb).
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
 
-from vei_scenario.language.discourse import VULNERABLE
-from vei_scenario.language.lexicon import OBJECT_PREPOSITIONS
+from vei_scenario.language.discourse import PUNCT, VULNERABLE
+from vei_scenario.language.function_words import CLAUSE_BREAKS, FIRST_PERSON
+from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.lexicon import LOOKING_OR_SIGNALLING, OBJECT_PREPOSITIONS
+from vei_scenario.language.settings import NEGATORS
 
 #: The adverb of going from one side to the other.
 _ACROSS = "across"
 #: Words after "across" that say it has no way of its own as object: the end of what is said.
-_ENDS = frozenset((".", ",", ";", "!", "?", ":", "and", "then", "but", "-", "—"))
+_ENDS = PUNCT | CLAUSE_BREAKS | {"-", "–", "—"}
+#: Negators that deny a going or an adverb ("not across", "never went across"); "no" and "without"
+#: deny a noun ("with no warning straight across").
+_DENYING = NEGATORS - {"no", "without"}
 #: Words after "across" that put the crossing in front of someone ("across in front", "across the front of").
 _IN_FRONT = (("in", "front"), ("infront",), ("the", "front", "of"), ("ahead",))
+#: How far after "across" the road user of such a front may stand (", in front of the white van").
+_FRONT_WORDS = 7
 #: Road users who cross on foot or on small wheels, or whose kind the reader settles from what they do.
 _CROSSERS = VULNERABLE | {"unknown"}
 #: Mentions that stand for a road user named before (whose kind the reader settles later).
@@ -52,6 +63,42 @@ def _no_way_after(tokens: list[str], j: int) -> bool:
     if not rest or rest[0] in _ENDS:
         return True
     return any(tuple(rest[: len(words)]) == words for words in _IN_FRONT)
+
+
+def _verb_before(tokens: list[str], j: int) -> int | None:
+    """Where the verb nearest before "across" at ``tokens[j]`` stands in its phrase (back to the end of
+    the phrase before it), or None: a word read only as a verb or noun, not an adverb ("straight") or
+    adjective ("left")."""
+    for k in range(j - 1, -1, -1):
+        if tokens[k] in _ENDS:
+            return None
+        pos = lemmas(tokens[k])
+        if "VERB" in pos and not pos.keys() & {"ADJ", "ADV"}:
+            return k
+    return None
+
+
+def _no_going(tokens: list[str], j: int) -> bool:
+    """Whether "across" at ``tokens[j]`` tells no going: its verb one of looking, calling or gesturing
+    ("looked across", "shouted across": where one looks or calls), or the adverb or its verb denied
+    ("Not across, just waiting", "did not go across")."""
+    v = _verb_before(tokens, j)
+    if v is not None and set(lemmas(tokens[v])["VERB"]) & LOOKING_OR_SIGNALLING:
+        return True
+    return any(k >= 0 and tokens[k] in _DENYING for k in (j - 1, -1 if v is None else v - 1))
+
+
+def _in_front_of_another(mentions: list, k: int, tokens: list[str], j: int) -> bool:
+    """Whether "across" at ``tokens[j]`` is told in front of a road user other than the ego ("then
+    across, in front of the van"): the road user named first after it (from mention ``k`` of its
+    clause), within the phrase of its front ("in front of the van", "the front of a lorry"). That
+    crossing is not the ego's road crossed before the ego, and the van stays a road user of its own.
+    Only where the ego is told by a first person before it: in a report with none ("across the front
+    of the bus" told of a bus driver's account) the vehicle may be the ego's own."""
+    if not FIRST_PERSON & set(tokens[:j]):
+        return False
+    after = next((m for m in mentions[k:] if m.slot == "actor" or (m.slot == "punct" and m.start > j + 1)), None)
+    return after is not None and after.slot == "actor" and after.start <= j + _FRONT_WORDS and after.value != "ego"
 
 
 def _covered(clauses: list, j: int) -> bool:
@@ -105,13 +152,15 @@ def across_alone(clauses: list, tokens: list[str]) -> list:
     is added where the adverb stands."""
     out = [(link, list(mentions)) for link, mentions in clauses]
     for j, word in enumerate(tokens):
-        if word != _ACROSS or _covered(out, j) or not _no_way_after(tokens, j):
+        if word != _ACROSS or _covered(out, j) or not _no_way_after(tokens, j) or _no_going(tokens, j):
             continue
         c = _clause_at(out, j)
         if c is None:
             continue
         mentions = out[c][1]
         k = next((i for i, m in enumerate(mentions) if m.start > j), len(mentions))
+        if _in_front_of_another(mentions, k, tokens, j):
+            continue  # ("across, in front of the van": not the ego's road crossed before it)
         subject = _subject(mentions, k, tokens)
         if subject is None and any(m.slot in ("behaviour", "actor") for m in mentions[:k]):
             continue  # (someone else's move, or the ego's)

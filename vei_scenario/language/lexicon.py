@@ -1555,6 +1555,11 @@ LANES = {
     3: ("three-lane",),
     4: ("four-lane",),
 }
+#: Verbs (lemmas) of looking, calling or gesturing: where they go ("looked across", "shouted over",
+#: "waved across to a friend") is where one looks or calls, no move of the one who does it.
+LOOKING_OR_SIGNALLING = frozenset(
+    ("look", "glance", "check", "peer", "stare", "gaze", "wave", "call", "shout", "gesture", "signal")
+)
 #: Words after which an ego mention is an object ("in front of the ego"), not a subject.
 OBJECT_PREPOSITIONS = {
     "of",

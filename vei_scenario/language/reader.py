@@ -1564,10 +1564,7 @@ _MOTION_PARTICLES = frozenset(
 #: taken to A&E", "scooter taken out of service", "the car was towed away"), and verbs of looking or
 #: signalling: where they go is where one looks or calls ("looked across at me", "checked over on
 #: scene", "waved over"): no move of a road user's.
-_CARRYING = frozenset((
-    "take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag",
-    "look", "glance", "check", "peer", "stare", "gaze", "wave", "call", "shout", "gesture", "signal",
-))  # fmt: skip
+_CARRYING = frozenset(("take", "bring", "carry", "send", "tow", "ferry", "airlift", "drag")) | L.LOOKING_OR_SIGNALLING
 
 
 #: Verbs (lemmas) whose "to" + infinitive is the act itself, tried or meant ("tried to squeeze past").

@@ -1805,15 +1805,25 @@ def owners_side(m, owner) -> bool:
     )
 
 
+def _a_verb_form(word: str) -> bool:
+    """Whether ``word`` is an inflected verb: a participle or past ("coming", "approaching", "came"),
+    not a noun that is also a verb ("the bus", "the buses")."""
+    pos = lemmas(word)
+    verbs = pos.get("VERB", ())
+    return bool(verbs) and word not in verbs and ("NOUN" not in pos or word.endswith("ing"))
+
+
 def crosses_from_beside_a_landmark(m, subject_acts: list, landmark_named_after: bool) -> bool:
     """Whether side mention ``m`` ("from the left") says where the clause's subject crosses from rather
     than where the road user named last is: the subject's latest act a crossing, the other named after
     that verb as its landmark ("a woman crossed in front of the bus from the left"). Why: "from the
     left" goes with the verb of motion; the vehicle she crosses before is where she passes, and read as
-    the vehicle's, her own side was lost and she came from the near kerb."""
+    the vehicle's, her own side was lost and she came from the near kerb. A side right after a verb of
+    the landmark's own is the landmark's ("in front of the van coming from the left": the van comes)."""
     return (
         m.slot == "side"
         and m.words.split()[0] == "from"
+        and not _a_verb_form(m.prev)
         and landmark_named_after
         and bool(subject_acts)
         and subject_acts[-1][0] == "cross_in_front"
