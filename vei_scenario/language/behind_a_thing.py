@@ -19,9 +19,11 @@ noun the reader does not know as one (a delivery robot, a shuttle the report is 
 from __future__ import annotations
 
 from vei_scenario.language import lexicon as L
+from vei_scenario.language.function_words import DEFINITE, INDEFINITE
 
-#: Words that open a noun phrase naming something other than the speaker ("behind a tree", "the bus").
-_OPENERS = frozenset(("a", "an", "the", "this", "that"))
+#: Words that open a noun phrase naming something other than the speaker ("behind a tree", "the bus"):
+#: the determiners but the possessives ("behind my car" is the ego's).
+_OPENERS = INDEFINITE | DEFINITE
 #: How many words of the object are read for the ego's noun or a possessive ("the white ego car").
 _OBJECT_WORDS = 4
 

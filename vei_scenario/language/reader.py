@@ -90,6 +90,7 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.comment_clause import without_comment_clauses
 from vei_scenario.language.elsewhere import stands_elsewhere
+from vei_scenario.language.function_words import DETERMINERS
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
@@ -2482,7 +2483,7 @@ def _read(text: str) -> Reading:
                     nxt.start,
                     scanned,
                     prev is not None and prev.slot == "punct" and prev.value == ",",
-                    lambda w: w in FUNCTION_WORDS or w in _PLACE_PREPOSITIONS,  # ("from behind the bus": its object)
+                    lambda w: w in _PLACE_PREPOSITIONS,  # ("from behind the bus": its object)
                 )
             )
             if m.slot in _POSITIONAL and before_actor and not (nxt.slot == "actor" and nxt.value == "ego"):
@@ -4097,7 +4098,7 @@ def _placed_object_before(mentions, k: int) -> bool:
 
 
 #: Words that may stand between a verb or noun of passing and what it passes ("overtook a", "an overtake of the").
-_BEFORE_THE_PASSED = frozenset(("a", "an", "the", "of"))
+_BEFORE_THE_PASSED = DETERMINERS | {"of"}
 
 
 def _passed_object(tokens: list[str], mentions, k: int) -> bool:
