@@ -24,6 +24,13 @@ class _Said:
     named_after: str = ""
     named_end: int = -1
     counted: bool = False
+    said: frozenset = frozenset()  # (what heading_named.told_apart reads: nothing said apart)
+    side: str | None = None
+    kerb_side: str | None = None
+    lane_side: str | None = None
+    edge: str | None = None
+    parked: bool = False
+    object_of: object = None
 
 
 _TICKET = (

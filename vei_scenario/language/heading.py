@@ -8,10 +8,14 @@ an earlier moment of the story: a road user it names, of a kind the body names t
 of the body, and the reading keeps the body's telling of it (which says more: where, how far, how fast),
 with the speed and gap the heading gives where the body gives none. What else the heading says (the
 time, the weather, the ego's speed) is still read. This goes further than :mod:`heading_named`, which
-folds a road user named bare in any heading or label and keeps the two apart where their readings
-differ: a line of its own over a body is a heading whatever its words, and two readings of one road
-user that differ are one telling read less well, not two road users. Not a road user that another
-reveals (what a cut-out uncovers stands there, whoever names it).
+folds a road user named bare in any heading or label: a line of its own over a body may name its road
+user with an article too. Both keep the two apart by one test, :func:`heading_named.told_apart`, read
+as a summary's: a first line that tells a road user of its own (parked, said in words to be somewhere
+the body's is not, doing a thing the body's does not) is no restating heading but the first message
+of a chat written without full stops ("van parked on the left with hazards on" over "a van came the
+other way"), and both road users stay. A heading that says no place, or one of the body's acts, is a
+summary read less fully than the body. Not a road user that another reveals (what a cut-out uncovers
+stands there, whoever names it).
 
 A heading is the text's first line when more lines follow it, it does not end as a sentence or a
 salutation does (a full stop, a question, a colon, a comma), no subject pronoun tells someone's act in
@@ -30,6 +34,7 @@ from typing import Protocol
 
 from vei_scenario.language.discourse import OTHER
 from vei_scenario.language.function_words import POSSESSIVE, SUBJECT_PRONOUNS
+from vei_scenario.language.heading_named import told_apart
 from vei_scenario.language.reading import Reading
 from vei_scenario.language.said_again import fold_into, without
 
@@ -94,9 +99,10 @@ def _owned(a: _Named) -> bool:
 
 def fold_told_again(actors: list, reading: Reading, end: int | None) -> list:
     """Fold each road user of ``reading`` named in the heading (before scanned word ``end``) into the
-    first the body brings in again of its kind (see the module): the body's telling stays, with the
-    speed and gap the heading gives where the body gives none. ``actors`` are what the reader gathered
-    of them, in the same order; returns them without the ones folded."""
+    first the body brings in again of its kind and does not tell apart from it (see the module): the
+    body's telling stays, with the speed and gap the heading gives where the body gives none.
+    ``actors`` are what the reader gathered of them, in the same order; returns them without the ones
+    folded."""
     if end is None:
         return actors
     specs = reading.actors
@@ -108,7 +114,10 @@ def fold_told_again(actors: list, reading: Reading, end: int | None) -> list:
             (
                 k
                 for k, b in enumerate(actors)
-                if b.named_end > end and _brought_in(b) and specs[k].kind == specs[j].kind
+                if b.named_end > end
+                and _brought_in(b)
+                and specs[k].kind == specs[j].kind
+                and not told_apart(a, b, specs[j], specs[k], summary=True)
             ),
             None,
         )

@@ -106,15 +106,39 @@ def _own_act(spec: ActorSpec) -> str | None:
     return None if first in _GOING_ALONG else _TURNING.get(first, first)
 
 
-def _told_apart(first: _Said, again: _Said, first_spec: ActorSpec, again_spec: ActorSpec) -> bool:
+def _where(a: _Said) -> set[str]:
+    """Where ``a`` was said to be in its own words: where it starts ("ahead of me"), and the side of the
+    road, kerb, lane or edge it is on ("on the left", "from the left lane")."""
+    return set(a.said) | {s for s in (a.side, a.kerb_side, a.lane_side, a.edge) if s}
+
+
+def _acts(spec: ActorSpec) -> set[str]:
+    """Every thing ``spec`` is read to do of its own (a turn across read as one act)."""
+    return {_TURNING.get(b[0], b[0]) for b in spec.behaviours if b[0] not in _GOING_ALONG}
+
+
+def told_apart(first: _Said, again: _Said, first_spec: ActorSpec, again_spec: ActorSpec, summary: bool = False) -> bool:
     """Whether the words or the reading set two road users of one kind apart: each said to start
     somewhere the other is not, or the first said to start elsewhere than the later one is read to;
     each doing a different thing of its own ("Taxi cut me up, then a taxi behind him ran the red"); one
-    parked and the other not; or one acting on the other."""
-    starts_apart = bool(first.said) and bool(again.said) and not (first.said & again.said)
-    placed_apart = _placed(first) and first_spec.relation != again_spec.relation
-    acts = (_own_act(first_spec), _own_act(again_spec))
-    acts_apart = None not in acts and acts[0] != acts[1]
+    parked and the other not; or one acting on the other.
+
+    With ``summary`` the first is told in a heading line over the later one's telling, which says more:
+    they start apart only where each is said in words to be somewhere the other is not ("on the right"
+    and "from the left", "ahead of me" and "from the left lane") and is read to start elsewhere, not
+    where only the reading of a heading that says no place differs; the heading's act sets it apart
+    only where the later one does no such thing (a heading names one of the acts its body tells)."""
+    if summary:
+        here, there = _where(first), _where(again)
+        starts_apart = bool(here and there) and not here & there and first_spec.relation != again_spec.relation
+        placed_apart = False
+        act, later_acts = _own_act(first_spec), _acts(again_spec)
+        acts_apart = act is not None and bool(later_acts) and act not in later_acts
+    else:
+        starts_apart = bool(first.said) and bool(again.said) and not (first.said & again.said)
+        placed_apart = _placed(first) and first_spec.relation != again_spec.relation
+        acts = (_own_act(first_spec), _own_act(again_spec))
+        acts_apart = None not in acts and acts[0] != acts[1]
     return (
         starts_apart
         or placed_apart
@@ -132,7 +156,7 @@ def _heading_said(actors: list, specs: list[ActorSpec], tokens: list[str], j: in
     if not _bare(tokens, a) or a.group or a.counted or a.member_named:
         return None
     k = next((k for k in range(j + 1, len(specs)) if specs[k].kind == kind), None)
-    if k is None or not _brought_in_new(actors[k]) or _told_apart(a, actors[k], specs[j], specs[k]):
+    if k is None or not _brought_in_new(actors[k]) or told_apart(a, actors[k], specs[j], specs[k]):
         return None
     if any(s.obstacle in (j, k) for s in specs):
         return None  # (what a cut-out reveals stands there: never the one that reveals it)
