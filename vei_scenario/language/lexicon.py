@@ -1668,6 +1668,14 @@ NOISE = (
     "bicycle lights",
     "unlit",
 )
+#: Verbs (lemmas) of pressing with force that tell a hard brake when what they press is the brakes, said
+#: or left unsaid ("slammed on", "hit the brakes", "stomped on her brakes", "stood on everything", "jumped
+#: on the brakes"), a closed class the protagonist and the outcome readers share.
+PRESSING = frozenset({"slam", "jam", "stamp", "stomp", "stand", "mash", "hit", "jump"})
+#: What such a verb presses when it brakes: the brakes, by name or as everything there is to press.
+PRESSED = frozenset({"brake", "brakes", "anchors", "everything"})
+#: Hollows in the road's surface a wheel goes into: ridden into, not met ("front wheel into a pothole").
+HOLLOWS = frozenset({"pothole", "potholes", "puddle", "puddles", "rut", "ruts"})
 #: Saying a change of speed ends standing ("decelerates to a standstill": a stop).
 TO_A_STOP = (
     "to a stop",

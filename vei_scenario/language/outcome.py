@@ -134,9 +134,10 @@ _EGO_HEADS = frozenset(("i", "we", "ego", "sv", "vut", "av", "im"))
 _EGO_PHRASES = ("ego vehicle", "ego car", "subject vehicle", "test vehicle", "vehicle under test", "our car",
                 "my car", "host vehicle")  # fmt: skip
 #: What the ego does when it has to act: evasion, and its manner.
-_EVADE = frozenset(
-    ("swerve", "dodge", "veer", "slam", "stamp", "jump", "stand", "yank", "jerk", "wrench", "jam", "anchor")
-)
+#: The verbs of pressing the brakes with force (:data:`lexicon.PRESSING`) are evasion only said of the
+#: pedal (:func:`_on_the_brakes`); "hit" is not one here: a verb of contact, and a plain brake when it
+#: works one (:data:`_WORKING`).
+_EVADE = frozenset(("swerve", "dodge", "veer", "yank", "jerk", "wrench", "anchor")) | (L.PRESSING - {"hit"})
 _HARD = frozenset(("hard", "dead", "sharply", "heavily", "suddenly", "firmly", "harshly", "violently", "emergency",
                    "full", "strongly", "abruptly"))  # fmt: skip
 _BRAKE = frozenset(("brake", "stop"))
@@ -350,11 +351,33 @@ def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> b
     vehicle that "hit the kerb and rolled" may be the ego's own crash)."""
     skip = _DETERMINERS | _POSSESSIVES | _TO_FURNITURE
     head = next((w for w in words[i + 1 : i + 6] if w not in skip), "")
+    if head == "it":  # ("had to pull in to the hedge, scraped it": the furniture moved to, told again)
+        head = _goal_before(sentence[: len(sentence) - len(words) + i])
     if head not in _FURNITURE:
         return False
     escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
     forced = any(sentence[k : k + 2] == ["had", "to"] for k in range(len(sentence) - len(words) + i))
     return escaping or forced or _walker_or_rider_before(sentence[: len(sentence) - len(words) + i])
+
+
+#: Prepositions of a move's goal ("pull in to the hedge", "swerved towards the fence", "onto the verge").
+_TO_A_GOAL = frozenset(("to", "towards", "toward", "into", "onto", "against"))
+
+
+def _goal_before(before: list[str]) -> str:
+    """The thing ``it`` stands for at the end of ``before``: its last noun of street furniture or of a
+    road user, when that is furniture a move was made to ("had to pull in to the hedge": "hedge"; not
+    "a car stopped by the hedge", where the hedge is only where the car was), else ""."""
+    for k in range(len(before) - 1, -1, -1):
+        w = before[k]
+        if w in _FURNITURE:
+            j = k - 1
+            while j >= 0 and before[j] in _DETERMINERS | _POSSESSIVES:
+                j -= 1
+            return w if j >= 0 and before[j] in _TO_A_GOAL else ""
+        if _road_user_word(w) or w in _PERSON_OBJECTS | _EGO_HEADS:
+            return ""
+    return ""
 
 
 #: The kinds of road user that are walkers or riders: never the ego's own vehicle.
@@ -877,7 +900,7 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return False  # ("into the right lane", "into our path")
     if _no_thing_met(chunk):
         return False  # ("into the crosswalk", "gone into the dark", "tucked into the sun visor")
-    if set(chunk) & _HOLLOWS:
+    if set(chunk) & L.HOLLOWS:
         return False  # ("front wheel into a pothole": a hollow of the road ridden into, nothing met)
     if chunk[-1] in _FITTED_PARTS:
         return True  # ("went into the rear passenger door": a part only a vehicle has, its owner unsaid)
@@ -885,10 +908,6 @@ def _into_road_user(words: list[str], j: int) -> bool:
         return "of" in obj or chunk[0] in _POSSESSIVES  # ("into the side of it", "into his back")
     nouns = [w for w in chunk if "NOUN" in _pos(w) and _number(w) is None]
     return bool(nouns) and chunk[0] in {"the", "a", "an", "some"} | _POSSESSIVES
-
-
-#: Hollows in the road's surface a wheel goes into: ridden into, not met.
-_HOLLOWS = frozenset(("pothole", "potholes", "puddle", "puddles", "rut", "ruts"))
 
 
 def _owned_part(chunk: list[str], rest: list[str]) -> bool:
@@ -1374,6 +1393,35 @@ _STOPPED_FROM = frozenset(("behind", "short", "before", "from", "back"))
 _ROOMY_METRES = 4.0
 
 
+#: Words that end the search for the subject of a stop: a clause of its own before it ("... as the car stops").
+_SUBORDINATE = frozenset(("as", "when", "while", "whilst", "after", "before", "until", "once", "where"))
+
+
+def _anothers_stop(
+    words: list[str], i: int, inherited: str | None, story: bool, named: frozenset[str] = frozenset()
+) -> bool:
+    """Whether the measured stop told at the unit ``i`` is another road user's, short of someone who is
+    not the ego ("the bus stopped 4 m behind her, I was behind the bus", "the rider jumps off as the car
+    stops 5 m short of him"): the length is a margin between two others, not the ego's. Its subject is
+    the nearest noun before the stop: a name the reader gave a road user (``named``), a third person, or
+    in a story told by the ego a road user's noun; with none, the clause's inherited subject. Not a stop
+    short of the ego ("the car stopped 5 m short of me")."""
+    if set(words[i + 1 : i + 5]) & ({"me", "us", "my", "our"} | _EGO_HEADS):
+        return False  # (short of the ego: its margin)
+    s = next((k for k in range(i - 1, max(-1, i - 9), -1) if _lemmas(words[k]) & {"stop", "halt", "pull"}), None)
+    if s is None:
+        return False
+    for k in range(s - 1, -1, -1):
+        w = words[k]
+        if w in _SUBORDINATE:
+            break
+        if w in _EGO_HEADS or _names_ego(words[: k + 1]):
+            return False
+        if w in named or w in ("he", "she", "they") or (story and _road_user_word(w)):
+            return True
+    return story and inherited == "other"
+
+
 def _measured_before(words: list[str], i: int) -> bool:
     """Whether the word at ``i`` comes right after a length ("6 m short"): the length says the margin."""
     return i > 0 and words[i - 1] in _UNIT_METRES and _length_said(words[max(0, i - 4) : i]) is not None
@@ -1389,7 +1437,7 @@ def _stop_left(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ())
     braked hard and stopped 6 m short of it") makes any length the end of an emergency stop: a near
     miss. Not a length to a place, a line or in a queue ("stopped 5 m behind the van at the lights",
     "2 m short of the stop line"): where one waits, no margin."""
-    if words[i] not in _UNIT_METRES or words[i + 1 : i + 2] == [] or words[i + 1] not in _STOPPED_FROM:
+    if words[i] not in _UNIT_METRES or not set(words[i + 1 : i + 2]) & _STOPPED_FROM:
         return None
     stopped = any(
         _lemmas(x) & {"stop", "halt"} or (_lemmas(x) & {"pull"} and words[k + 1 : k + 2] == ["up"])
@@ -1413,19 +1461,38 @@ def _stop_left(words: list[str], i: int, lead: list[str] | tuple[str, ...] = ())
     return "room" if metres >= _ROOMY_METRES else None
 
 
-#: Verbs of escape that are one only said of the pedal ("stood on the brakes", "jumped on them").
-_ON_THE_PEDAL = frozenset(("slam", "stamp", "jump", "stand", "jam"))
+def _on_the_brakes(words: list[str], k: int) -> bool:
+    """Whether what a verb of pressing (:data:`lexicon.PRESSING`) says from ``k`` on, up to the end of
+    its clause, is the brakes: the brakes or the pedal named ("hit the brakes", "mashed the brakes",
+    "jammed my foot on the brake", "stood on everything"), or "on" right after it (an adverb between)
+    with no noun phrase of its own after it ("slammed on and stopped", "stood hard on them"). Not a
+    verb of pressing with anything else ("stood on the verge", "jumped on his bike", "a van stands still")."""
+    phrase: list[str] = []
+    for x in words[k : k + 6]:
+        if x in _BREAK_PUNCT or x in CLAUSE_BREAKS:
+            break
+        phrase.append(x)
+    if set(phrase) & (L.PRESSED | {"pedal"}):
+        return True
+    on = next((n for n, x in enumerate(phrase[:2]) if x == "on" and (n == 0 or phrase[0] in _HARD)), None)
+    if on is None:
+        return False
+    nxt = phrase[on + 1 : on + 2]
+    return not nxt or _is_verb(nxt[0]) or not (nxt[0] in _DETERMINERS | _POSSESSIVES or "NOUN" in _pos(nxt[0]))
 
 
 def _hard_stop_said(before: list[str]) -> bool:
-    """Whether ``before`` says a hard stop or a swerve not denied ("braked hard", "slammed on",
-    "an emergency stop"; not "no hard braking")."""
+    """Whether ``before`` says a hard stop or a swerve not denied ("braked hard", "slammed on", "hit
+    the brakes", "stomped on them", "an emergency stop"; not "no hard braking")."""
     for k, x in enumerate(before):
         if set(before[max(0, k - 2) : k]) & {"no", "not", "without", "never"}:
             continue
+        if _is_verb(x) and _lemmas(x) & L.PRESSING:
+            if _on_the_brakes(before, k + 1):
+                return True  # ("slammed on", "hit the brakes"; not "a van stands still", "the rider jumps off")
+            continue
         if _is_verb(x) and _lemmas(x) & _EVADE:
-            if not _lemmas(x) & _ON_THE_PEDAL or "on" in before[k + 1 : k + 3]:
-                return True  # ("swerved", "slammed on"; not "a van stands still", "the rider jumps off")
+            return True  # ("swerved")
         if x in _HARD and any(_lemmas(y) & _BRAKE for y in before[max(0, k - 2) : k + 3]):
             return True
     return False
@@ -1838,10 +1905,8 @@ def _ego_acts(words: list[str], i: int) -> str | None:
     if _off_the_road(words, i):
         return "evade"
     if lem & _EVADE:
-        if lem & {"slam", "stamp", "jump", "stand", "jam"} and not (
-            "on" in words[i + 1 : i + 3] or {"brake", "brakes", "anchors", "pedal"} & set(words[i + 1 : i + 5])
-        ):
-            return None  # (a brake only with "on" right after or the brakes named: not "stood at the kerb on my right")
+        if lem & L.PRESSING and not _on_the_brakes(words, i + 1):
+            return None  # (a brake only said of the pedal: not "stood at the kerb on my right", "jumps off")
         return "evade"
     if lem & _WORKING and not words[i].endswith("ing") and _brakes_worked(words, i):
         if set(window) & _MILD or lem & {"tap", "dab", "feather"}:
@@ -2122,7 +2187,7 @@ def _fright(words: list[str], i: int) -> bool:
 _BAD = frozenset(
     ("bad", "worse", "nasty", "ugly", "serious", "fatal", "disaster", "disastrous", "tragic", "tragedy", "messy",
      "horrible", "horrific", "terrible", "awful", "catastrophic", "catastrophe", "carnage", "deadly", "grim", "dire",
-     "curtains", "badly", "tears", "story", "game")
+     "curtains", "badly", "tears", "story", "game", "critical")
 )  # fmt: skip
 #: Nouns of a disaster, which a hedge makes one that nearly happened ("nearly a disaster").
 _DISASTERS = frozenset(("disaster", "tragedy", "catastrophe", "carnage"))
@@ -2488,6 +2553,46 @@ def _rated_critical(tokens: list[str]) -> bool:
     return False
 
 
+#: Verbs (lemmas) and nouns of an emergency system's going off ("AEB triggered", "the AEB kicked in").
+_TRIGGERING = frozenset(("trigger", "activate", "fire", "kick", "intervene", "engage", "deploy", "activation",
+                         "intervention"))  # fmt: skip
+#: The names of an emergency brake, as the reader lowercases them ("AEB", "emergency brake assist").
+_EMERGENCY_BRAKES = frozenset(("aeb", "aebs"))
+#: What a criticality is said to be when the scene came close ("Criticality: high", "high criticality").
+_HIGH = frozenset(("high", "severe", "extreme", "critical"))
+#: Words between "criticality" and its value ("criticality: high", "criticality was very high").
+_RATING_FILLERS = frozenset((":", "=", "-", "is", "was", "level", "rating", "very", "rated"))
+#: Verbs (lemmas) a frightened heart does ("heart pounding", "my heart was racing").
+_HEART_BEATING = frozenset(("pound", "race", "thump", "hammer", "pump"))
+#: Words of a fright felt ("I was shaking", "left me shaken", "terrified").
+_AFRAID = frozenset(("terrified", "petrified", "shaken", "shaking", "panicked", "panicking", "adrenaline"))
+_NEGATING = frozenset(("no", "not", "never", "without", "nothing", "failed", "fails"))
+
+
+def _emergency_said(tokens: list[str]) -> bool:
+    """Whether the description says an emergency anywhere, not denied: an emergency brake that went
+    off ("AEB triggered", "the emergency brake kicked in", "triggered the AEB", "AEB activation"), a
+    criticality said high ("Criticality: high", "high criticality"), or fear ("heart pounding", "I was
+    shaking", "terrified"). Alone it states no outcome; a stop with room to spare said with it was the
+    end of an emergency stop (see :func:`decide`)."""
+    for k, w in enumerate(tokens):
+        if w in _EMERGENCY_BRAKES or (w == "emergency" and tokens[k + 1 : k + 2] in (["brake"], ["brakes"])):
+            near = tokens[max(0, k - 3) : k] + tokens[k + 1 : k + 5]
+            if any(_lemmas(x) & _TRIGGERING or x in _TRIGGERING for x in near) and not set(near) & _NEGATING:
+                return True
+        if w == "criticality":
+            value = next((x for x in tokens[k + 1 : k + 5] if x not in _RATING_FILLERS), "")
+            if value in _HIGH:
+                return True  # ("Criticality: high")
+        if w == "criticality" and tokens[k - 1 : k] == ["high"] and tokens[k - 2 : k - 1] not in (["not"], ["no"]):
+            return True  # ("high criticality")
+        if w == "heart" and any(_lemmas(x) & _HEART_BEATING for x in tokens[k + 1 : k + 4]):
+            return True  # ("heart pounding", "my heart was racing")
+        if w in _AFRAID and not set(tokens[max(0, k - 3) : k]) & _NEGATING:
+            return True
+    return False
+
+
 def contacts_made(tokens: list[str]) -> list[int]:
     """The indices of the words of ``tokens`` (the reader's lowercased tokens) that state a contact
     between road users that happened: a verb or noun of contact whose object is a road user (not "hit
@@ -2554,6 +2659,11 @@ def _overruled(cues: list[Cue], sentence_of: list[int], verdict: int | None) -> 
     ]
 
 
+def _holds(sentence: list[str], words: list[str]) -> bool:
+    """Whether ``sentence`` holds the clause ``words`` as a run of its words."""
+    return any(sentence[k : k + len(words)] == words for k in range(len(sentence) - len(words) + 1))
+
+
 def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order; ``named``: the head words the reader named the
@@ -2573,8 +2683,12 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
         ends_sentence = n + 1 == len(clauses) or clauses[n + 1].first_of_sentence
         if clause.first_of_sentence:
             said_in, cursor = min(said_in + 1, len(raw) - 1), 0
+            # (a sentence of conjunctions alone, "and ." left of a heading "Van and cyclist", has no clause)
+            said_in = next((s for s in range(said_in, len(raw)) if _holds(raw[s], words)), said_in)
         whole = raw[said_in] if raw else words
-        at = next((k for k in range(cursor, len(whole)) if whole[k : k + len(words)] == words), cursor)
+        at = next((k for k in range(cursor, len(whole)) if whole[k : k + len(words)] == words), None)
+        if at is None:
+            whole, at = words, 0  # (not found in its sentence: the clause is all that is known of it)
         cursor = at + len(words)
         sentence = words if clause.first_of_sentence else sentence + words
         own = _subject(words)
@@ -2639,8 +2753,10 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
             if w == "within" and _within(words, i):
                 add("near")  # ("came within a foot of my door")
                 continue
-            if (w in _BAD or _lemmas(w) & _HARMED) and (
-                _could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, HEDGES, 3))
+            if (
+                (w in _BAD or _lemmas(w) & _HARMED)
+                and (_could_have_been_bad(words, i) or (w in _DISASTERS and _scoped(words, i, HEDGES, 3)))
+                and not (w == "critical" and _denied_before(words, i))  # ("could never have been critical")
             ):
                 add("hedged")  # ("could have been nasty", "she could have been killed": it was not)
                 continue
@@ -2710,6 +2826,8 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 add("safe")
                 continue
             margin = _margin(words, i, sentence[: len(sentence) - len(words)])
+            if margin == "room" and _anothers_stop(words, i, clause.inherited, story, named):
+                margin = None  # ("the bus stopped 4 m behind her, I was behind the bus": not the ego's margin)
             if margin == "room" and _hard_stop_said([x for ws in raw[:said_in] for x in ws]):
                 margin = NEAR_MISS  # ("full braking at 8 m/s². ... stops 6.4 m short": an emergency stop's end)
             if margin is not None and margin == NEAR_MISS and w == "time" and _denied_before(words, i):
@@ -2753,7 +2871,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 add("unharmed")  # ("nothing happened", "Nothing dramatic": nothing of note)
             if w in _CLOSE and _predicate(words, i):
                 add("safe" if _denied_before(words, i) else "close")  # ("nobody close"; "it was close")
-            if w in _CLEARED and _gone_before_arrival(whole, at + i):
+            if _gone_before_arrival(whole, at + i):
                 add("safe")  # ("he was gone before I got there": the way was clear when the ego came)
             if w in ("critical", "criticality") and _denied_before(words, i):
                 add("safe")  # ("not critical", "nothing critical", "no criticality": nothing came close)
@@ -2804,45 +2922,69 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
                 elif not (_modal_perfect(words, i) or clause.after_if):
                     add("contact")  # ("couldn't avoid him", "was unable to avoid her": two denials)
     cues = _overruled(cues, sentence_of, verdict)
+    if _emergency_said(tokens):
+        cues.append(Cue("alarm", "emergency"))  # (AEB triggered, high criticality, fear: see decide)
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
     return cues
 
 
 #: What a road user that has left the way is, or has done ("was gone", "was already across", "had cleared").
-_CLEARED = frozenset(("gone", "across", "past", "through", "clear", "cleared", "crossed", "passed", "over", "side"))
+_CLEARED = frozenset(("gone", "across", "past", "through", "clear", "cleared", "crossed", "passed", "over"))
+#: The same said as a phrase ("she was already on the other side").
+_CLEARED_PHRASES = (("on", "the", "other", "side"),)
 #: Verbs (lemmas) of coming to where the other had been ("before I got there", "when we arrived").
 _ARRIVING = frozenset(("get", "arrive", "reach", "come"))
 #: Adverbs between the auxiliary and what the road user had become ("was long gone", "was already across").
 _BY_THEN = frozenset(("already", "long", "well", "safely", "just", "all"))
+#: The auxiliaries a road user's having left the way is said with ("he was gone", "the bus had cleared").
+_HAD_LEFT = frozenset(("was", "were", "had", "'d", "is", "are", "'s"))
+
+
+def _cleared_at(whole: list[str], k: int) -> int | None:
+    """Where a word or phrase of having left the way that ends at ``k`` of ``whole`` begins ("gone",
+    "on the other side"), or None."""
+    if k >= len(whole):
+        return None
+    if whole[k] in _CLEARED:
+        return k
+    return next((k + 1 - len(p) for p in _CLEARED_PHRASES if tuple(whole[k + 1 - len(p) : k + 1]) == p), None)
+
+
+def _by_the_time(words: list[str]) -> int | None:
+    """Where the clause after "by the time" begins in ``words`` ("by the time I got there"), or None."""
+    return next((t + 3 for t in range(len(words) - 2) if words[t : t + 3] == ["by", "the", "time"]), None)
+
+
+def _ego_arrives(words: list[str]) -> bool:
+    """Whether ``words`` open with the ego and a verb of arriving right after it ("I got there", "we arrived")."""
+    return bool(words) and words[0] in _EGO_HEADS and any(_is_verb(x) and _lemmas(x) & _ARRIVING for x in words[1:4])
 
 
 def _gone_before_arrival(whole: list[str], k: int) -> bool:
-    """Whether the word at ``k`` of the sentence ``whole`` says that another road user, its subject
-    (a third person or a road user's noun), had left the way before the ego came to it ("he was gone
-    before I got there", "she was already on the other side when we arrived", "by the time we got
-    there the bus had cleared"): the two never met, a safe pass. Not "was gone before I could brake"
-    (the ego did not arrive: it had no time to act)."""
-    j = k - 1 - 3 * (whole[k] == "side" and whole[k - 3 : k] == ["on", "the", "other"])  # ("on the other side")
+    """Whether the word at ``k`` of the sentence ``whole`` ends what says that another road user, its
+    subject (a third person or a road user's noun), had left the way before the ego came to it ("he
+    was gone before I got there", "she was already on the other side when we arrived", "by the time we
+    got there the bus had cleared"): the two never met, a safe pass. Not "was gone before I could
+    brake" (the ego did not arrive: it had no time to act)."""
+    start = _cleared_at(whole, k)
+    if start is None:
+        return False
+    j = start - 1
     while j >= 0 and whole[j] in _BY_THEN:
         j -= 1
-    if j < 1 or whole[j] not in ("was", "were", "had", "'d", "is", "are", "'s"):
+    if j < 1 or whole[j] not in _HAD_LEFT:
         return False
     subject = whole[j - 1]
     if subject not in SUBJECT_PRONOUNS - {"i", "we", "you"} and not _road_user_word(subject):
         return False
     earlier = whole[max(0, j - 9) : j - 1]  # ("by the time I got there she was gone")
-    if "time" in earlier and earlier[max(0, earlier.index("time") - 2) :][:2] == ["by", "the"]:
-        t = earlier.index("time")
-        if earlier[t + 1 : t + 2] and earlier[t + 1] in _EGO_HEADS:
-            return any(_is_verb(x) and _lemmas(x) & _ARRIVING for x in earlier[t + 2 : t + 5])
-    after = whole[k + 1 : k + 9]
-    at = next((n for n, x in enumerate(after) if x in ("before", "when")), None)
-    if at is None and "time" in after and after[max(0, after.index("time") - 2) :][:2] == ["by", "the"]:
-        at = after.index("time")  # ("by the time I got there")
-    if at is None or not after[at + 1 : at + 2] or after[at + 1] not in _EGO_HEADS:
-        return False
-    return any(_is_verb(x) and _lemmas(x) & _ARRIVING for x in after[at + 2 : at + 5])
+    t = _by_the_time(earlier)
+    if t is not None and _ego_arrives(earlier[t:]):
+        return True
+    after = whole[k + 1 : k + 9]  # ("he was gone before I got there", "... by the time we arrived")
+    at = next((n + 1 for n, x in enumerate(after) if x in ("before", "when")), _by_the_time(after))
+    return at is not None and _ego_arrives(after[at:])
 
 
 @lru_cache(maxsize=1)
@@ -2999,7 +3141,8 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
     read coming into another's path (crossing, cutting in, turning across, running the red, coming the
     wrong way); then a named road user's hard brake or swerve (an ``escape``) is one party escaping the
     other, as the ego's evasion is ("a rider ran the red and the Tesla braked hard"); without one, a
-    hard brake is the lead vehicle's own act ("the lead car brakes hard"), no escape."""
+    hard brake is the lead vehicle's own act ("the lead car brakes hard"), no escape. An ``alarm``
+    (an emergency said anywhere: :func:`_emergency_said`) makes a roomy stop a near miss."""
     kinds = {c.kind for c in cues}
     if "knock" in kinds:
         kinds.discard("knock")  # (a light knock felt or heard is a contact, unless a miss or a safe pass is
@@ -3013,8 +3156,11 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "room" in kinds:  # (a stop with several metres left: room to spare, unless it was an emergency)
         kinds.discard("room")
-        if not kinds & {"evade", "lucky", "late"}:
+        if "alarm" in kinds:
+            kinds.add("near")  # ("stops 5 m short. AEB triggered.": the end of an emergency stop)
+        elif not kinds & {"evade", "lucky", "late"}:
             kinds.add("safe")
+    kinds.discard("alarm")  # (alone, an emergency said only weighs a roomy stop)
     if "unharmed" in kinds:  # (nobody hurt, nothing happened: how it ended, not how close it was)
         kinds.discard("unharmed")
         forced = sudden or intruded or kinds & {"evade", "brake"}

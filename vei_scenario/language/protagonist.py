@@ -56,14 +56,10 @@ from vei_scenario.language.ego import (
 )
 from vei_scenario.language.function_words import DETERMINERS
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.lexicon import PRESSED, PRESSING
 
 #: Verbs of the reaction a report gives the vehicle it is about (lemmas), a closed class.
 REACTING = frozenset({"brake", "stop", "swerve", "slow", "steer", "halt", "decelerate", "skid", "stamp"})
-#: Verbs (lemmas) of pressing with force that tell a braking when what they press is the brakes, said
-#: or left unsaid ("slammed on", "hit the brakes", "stood on everything"), a closed class.
-PRESSING = frozenset({"slam", "jam", "stamp", "stomp", "stand", "mash", "hit"})
-#: What such a verb presses when it brakes: the brakes, by name or as everything there is to press.
-PRESSED = frozenset({"brake", "brakes", "anchors", "everything"})
 #: The nouns of the stop a verb of motion comes to ("eased to a stop", "came to a standstill").
 STOP_NOUNS = frozenset({"stop", "halt", "standstill"})
 #: Words that may stand between "to a" and the stop ("to a full stop", "to a dead halt").
