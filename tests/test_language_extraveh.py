@@ -98,3 +98,18 @@ def test_a_driver_of_another_vehicle_stays_apart():
         " braked hard."
     )
     assert _kinds(text) == ["bicycle", "truck", "van"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The bus braked at 20 km/h when one e-scooter rider crossed in front of it.",
+        "A tram pulled away at 15 km/h and one bike rider rode into the tram side. Tram driver not to blame.",
+    ],
+)
+def test_a_rider_named_by_a_rider_word_is_someone_the_reports_vehicle_meets(text):
+    """ "One e-scooter rider" is a road user the report's one vehicle meets, so that vehicle is the ego."""
+    from vei_scenario.language import protagonist
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+
+    assert "ego" in protagonist.frame(list(_tokens(text, brackets=True)), _kind_at, _known, [])

@@ -347,9 +347,11 @@ def _referents(tokens: list[str], users, vehicles: frozenset[str]) -> tuple[list
             driver.mentions.append(p)
             continue
         by_vehicle = last in AT_WHEEL  # ("the bus driver": the bus, whatever type "driver" gave the phrase)
-        if by_vehicle:
-            if not _drives_vehicle(tokens, p, vehicles):
+        if by_vehicle and not _drives_vehicle(tokens, p, vehicles):
+            if p.kind in vehicles:
                 continue
+            by_vehicle = False  # ("one e-scooter rider": a rider, someone the report's vehicle meets)
+        if by_vehicle:
             words = words[:-1]
             last = words[-1]
         same = None
