@@ -8,10 +8,10 @@ from __future__ import annotations
 import math
 
 import pytest
+from built_layers import junction_context
 from play_layers import play_layers
 
 from vei_scenario.language.behaviours import run_red_light
-from vei_scenario.language.behaviours.base import ActorContext
 from vei_scenario.language.corpus_check import played_problems
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.rules_backend import layers_from_text
@@ -53,32 +53,12 @@ def test_a_runner_whose_way_is_not_said_is_left_to_the_builder(text):
     assert "turn" not in _run(text).get("config", {})
 
 
-def _ctx(ego_route: str = "straight") -> ActorContext:
-    return ActorContext(
-        actor="Adversary1",
-        actor_type="car",
-        ego="Ego",
-        ego_speed_mps=10.0,
-        actor_speed_mps=10.0,
-        ego_lane_id=-1,
-        actor_lane_id=-1,
-        actor_road="3",
-        actor_s_m=260.0,
-        lanes=1,
-        friction=1.0,
-        map_kind="crossroad",
-        exits={"right": "2", "straight": "3", "left": "4"},
-        actor_exits={"straight": "1", "left": "2", "right": "4"},
-        ego_route=ego_route,
-    )
-
-
 def test_the_way_said_is_the_way_taken():
-    assert run_red_light.way_through(_ctx(), "straight") == "straight"
-    assert run_red_light.way_through(_ctx("left"), "right") == "right"
+    assert run_red_light.way_through(junction_context(), "straight") == "straight"
+    assert run_red_light.way_through(junction_context("left"), "right") == "right"
     # (not said: from the opposite arm it turns across the ego's way)
-    assert run_red_light.way_through(_ctx()) == "left"
-    assert run_red_light.way_through(_ctx(), None) == "left"
+    assert run_red_light.way_through(junction_context()) == "left"
+    assert run_red_light.way_through(junction_context(), None) == "left"
 
 
 def _turned(result) -> float:

@@ -13,6 +13,7 @@ Each sentence is read, written, played with vei run's interpreter and checked wi
 from __future__ import annotations
 
 import pytest
+from built_layers import layers_of
 from play_layers import play_layers
 
 from vei_scenario.language.behaviours import overtake
@@ -70,31 +71,14 @@ def _turning_off(map_kind: str, placement: str) -> dict:
     ego = {"placement": placement, "lane": 1, "agent": "cap", "speed_mps": 13.0}
     if map_kind != "straight":
         ego["distance_m"] = 70.0
-    return {
-        "format": "vei-layers/1",
-        "description": "built by a test",
-        "seed": 0,
-        "intent": "unspecified",
-        "duration_s": 15.0,
-        "rate_hz": 20,
-        "environment": {
-            "map": {"kind": map_kind, "lanes_per_direction": 2},
-            "weather": {"condition": "clear"},
-            "time_of_day": "12:00",
-            "traffic_density": "none",
-        },
-        "ego": ego,
-        "adversaries": [
-            {
-                "name": "Adversary1",
-                "type": "van",
-                "spawn": {"relation": "left", "longitudinal_m": 20.0},
-                "speed_mps": 11.0,
-                "behaviour": {"behaviour": "forced_turn", "config": {"gap_m": 8.0, "turn": "right"}},
-            }
-        ],
-        "background": {"vehicles": []},
+    adversary = {
+        "name": "Adversary1",
+        "type": "van",
+        "spawn": {"relation": "left", "longitudinal_m": 20.0},
+        "speed_mps": 11.0,
+        "behaviour": {"behaviour": "forced_turn", "config": {"gap_m": 8.0, "turn": "right"}},
     }
+    return layers_of(map_kind, ego, [adversary])
 
 
 @pytest.mark.parametrize(("map_kind", "placement"), [("curve", "on_curve"), ("straight", "straight")])

@@ -11,47 +11,24 @@ from __future__ import annotations
 import math
 
 import pytest
+from built_layers import junction_context, layers_of
 from play_layers import play_layers
 
 from vei_scenario.language.behaviours import run_red_light
-from vei_scenario.language.behaviours.base import ActorContext
 from vei_scenario.language.corpus_check import played_problems
 from vei_scenario.language.rules_backend import layers_from_text
 
 
 def _runner(relation: str, ego_route: str, lanes: int = 2, kind: str = "bicycle", speed: float = 5.0) -> dict:
-    return {
-        "format": "vei-layers/1",
-        "description": "built by a test",
-        "seed": 0,
-        "intent": "unspecified",
-        "duration_s": 15.0,
-        "rate_hz": 20,
-        "environment": {
-            "map": {"kind": "crossroad", "lanes_per_direction": lanes, "traffic_signals": True},
-            "weather": {"condition": "clear"},
-            "time_of_day": "12:00",
-            "traffic_density": "none",
-        },
-        "ego": {
-            "placement": "before_junction",
-            "lane": 1,
-            "agent": "cap",
-            "speed_mps": 10.0,
-            "distance_m": 60.0,
-            "route": ego_route,
-        },
-        "adversaries": [
-            {
-                "name": "Adversary1",
-                "type": kind,
-                "spawn": {"relation": relation},
-                "speed_mps": speed,
-                "behaviour": {"behaviour": "run_red_light", "config": {}},
-            }
-        ],
-        "background": {"vehicles": []},
+    ego = {"placement": "before_junction", "lane": 1, "agent": "cap", "speed_mps": 10.0, "distance_m": 60.0}
+    adversary = {
+        "name": "Adversary1",
+        "type": kind,
+        "spawn": {"relation": relation},
+        "speed_mps": speed,
+        "behaviour": {"behaviour": "run_red_light", "config": {}},
     }
+    return layers_of("crossroad", ego | {"route": ego_route}, [adversary], lanes=lanes, signals=True)
 
 
 def _turned(result) -> float:
@@ -87,22 +64,7 @@ def test_a_runner_from_a_side_arm_still_goes_straight_over(relation, tmp_path):
 
 def test_the_way_through_is_chosen_on_the_crossroad_only():
     """Guard: on a roundabout every way goes round the ring: the runner keeps its straight exit."""
-    ctx = ActorContext(
-        actor="Adversary1",
-        actor_type="car",
-        ego="Ego",
-        ego_speed_mps=10.0,
-        actor_speed_mps=10.0,
-        ego_lane_id=-1,
-        actor_lane_id=-1,
-        actor_road="3",
-        actor_s_m=260.0,
-        lanes=1,
-        friction=1.0,
-        map_kind="roundabout",
-        exits={"right": "2", "straight": "3", "left": "4"},
-        actor_exits={"straight": "1", "left": "2", "right": "4"},
-    )
+    ctx = junction_context(map_kind="roundabout")
     assert run_red_light.way_through(ctx) == "straight"
     ctx.map_kind = "crossroad"
     assert run_red_light.way_through(ctx) == "left"

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from built_layers import layers_of
 from play_layers import play_layers
 
 from vei_scenario.language.corpus_check import played_problems
@@ -20,23 +21,7 @@ def _layers(kind: str, lanes: int, ego: dict, adversaries: list[dict], duration_
     ego = {"placement": placement, "lane": 1, "agent": "cap"} | ego
     if kind != "straight":
         ego.setdefault("distance_m", 60.0)
-    return {
-        "format": "vei-layers/1",
-        "description": "built by a test",
-        "seed": 0,
-        "intent": "unspecified",
-        "duration_s": duration_s,
-        "rate_hz": 20,
-        "environment": {
-            "map": {"kind": kind, "lanes_per_direction": lanes},
-            "weather": {"condition": "clear"},
-            "time_of_day": "12:00",
-            "traffic_density": "none",
-        },
-        "ego": ego,
-        "adversaries": adversaries,
-        "background": {"vehicles": []},
-    }
+    return layers_of(kind, ego, adversaries, lanes=lanes, duration_s=duration_s)
 
 
 def _play(layers: dict, tmp_path: Path) -> list[str]:
