@@ -257,9 +257,15 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             min(
                 120.0,
                 round(
-                    max((topology_time_s(a["behaviour"], ego_speed) + _ring_s(a, kind) for a in adversaries), default=0)
-                    + _approach_s(ego, adversaries)
-                    + 5,
+                    max(
+                        max(
+                            (topology_time_s(a["behaviour"], ego_speed) + _ring_s(a, kind) for a in adversaries),
+                            default=0,
+                        )
+                        + _approach_s(ego, adversaries)
+                        + 5,
+                        _kerb_crossing_s(ego, adversaries),
+                    ),
                     1,
                 ),
             ),
@@ -386,6 +392,29 @@ def _approach_s(ego: dict, adversaries: list[dict]) -> float:
     if not _something_at_junction(ego, adversaries):
         return 0.0
     return float(ego["distance_m"]) / max(float(ego["speed_mps"]), 1.0)
+
+
+#: How long (s) a run goes on after the ego has reached where a road user crosses in front of it.
+CROSSED_S = 4.0
+
+
+def _kerb_crossing_s(ego: dict, adversaries: list[dict]) -> float:
+    """How long the run must last for the ego to reach every kerb-side crossing ahead of it and the
+    crossing to be over (s): a crosser is timed to meet the ego there (it sets off when the ego is as
+    far off as its way across takes), so the meeting comes when the ego has driven up to it. Why: a
+    walker crossing a wide road slowly stands far ahead, and a slow ego takes longer to get there
+    than a crossing's usual few seconds; a run that ends first never shows the crossing."""
+    speed = float(ego["speed_mps"])
+    if speed < STANDING_MPS:
+        return 0.0
+    meets = [
+        float(a["spawn"]["longitudinal_m"]) / speed + CROSSED_S
+        for a in adversaries
+        if str(a["spawn"].get("relation", "")).startswith("roadside")
+        and "longitudinal_m" in a["spawn"]
+        and any(n["behaviour"] == "cross_in_front" for _, n in behaviour_nodes(a["behaviour"]))
+    ]
+    return max(meets, default=0.0)
 
 
 def _place_obstacles(reading: Reading, adversaries: list[dict], ego_speed: float) -> None:

@@ -97,12 +97,17 @@ def top_speed(adv: dict, ego_speed: float) -> float:
     """The top speed (m/s) of adversary ``adv``'s vehicle: its kind's usual one, or more where its
     layers ask more of it: the speed they give it (a rider the text has doing 30 mph rides a tuned
     scooter), and an overtake's pass, which must outrun the ego (at its kind's usual top a rider
-    never gets past an ego as fast as that)."""
+    never gets past an ego as fast as that), as a cut-in's from behind the ego does."""
     top = max(TYPES[adv["type"]][3], float(adv.get("speed_mps", 0.0)))
     for _, node in behaviour_nodes(adv["behaviour"]):
         if node["behaviour"] == "overtake":
             gain = value(node.get("config", {}), behaviour("overtake").PARAMETERS, "speed_gain_mps")
             top = max(top, ego_speed + gain)
+        if node["behaviour"] == "cut_in" and adv["spawn"].get("relation") == "behind":
+            # (from behind the ego in its lane it comes past first: cut_in.from_behind)
+            behind_m = max(0.0, -float(adv["spawn"].get("longitudinal_m", 0.0)))
+            pace = cut_in.pass_speed(ego_speed, float(adv.get("speed_mps", 0.0)), behind_m, node.get("config", {}))
+            top = max(top, pace)
     return round(top, 3)
 
 

@@ -114,5 +114,21 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
         # (after giving way it goes as soon as the ego has passed; in front of an ego that stands
         # there is nothing to time against, and an ego that never comes closer would never set it off)
         return [Step("cross", actions, hold_s=in_lane_s)]
-    trigger = Condition("ego_within", round(trigger_distance_m(ctx, cfg), 2))
-    return [Step("cross", actions, conditions=[trigger], hold_s=in_lane_s)]
+    trigger_m = trigger_distance_m(ctx, cfg)
+    trigger = Condition("ego_within", round(trigger_m, 2))
+    return [Step("cross", actions, conditions=[trigger], hold_s=in_lane_s, fallback_s=late_s(ctx, trigger_m))]
+
+
+#: How long after the ego should have come within its trigger distance a kerb-side crosser goes anyway (s).
+LATE_S = 2.0
+
+
+def late_s(ctx: ActorContext, trigger_m: float) -> float | None:
+    """When a kerb-side crosser on the ego's road sets off if the ego never comes within its trigger
+    distance (s): :data:`LATE_S` after the ego, at its speed, would have. Why: an ego that stops short
+    for someone else (a rider ahead braking, a car pulling out) never comes closer, and a crossing
+    timed only by its distance would then never be made, though the text says it was."""
+    if ctx.on_another_arm() or ctx.ego_speed_mps < EGO_AT_REST_MPS:
+        return None
+    ahead_m = abs(ctx.actor_s_m - ctx.ego_s_m)
+    return round(max(0.0, ahead_m - trigger_m) / ctx.ego_speed_mps + LATE_S, 3)

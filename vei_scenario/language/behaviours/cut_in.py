@@ -5,6 +5,11 @@ free-space gap between them falls to ``gap_m`` it changes into the ego's lane ov
 ``lane_change_s`` (sinusoidal) and at the same time slows by ``brake_delta_mps`` at
 ``brake_rate_mps2``. Gap, lane-change time and braking are what the criticality words set.
 
+One that starts behind the ego in its own lane (a car "behind us" that pulls out and cuts in) has no
+lane to change from: it pulls out into the lane beside the ego's, comes past faster than the ego, and
+changes back into the ego's lane once it is ``gap_m`` ahead, as an overtaker does; a cut-in is an
+entry in front of the ego, which one that stays behind it never makes.
+
 One parked beyond the far kerb (``roadside_left``: across the oncoming lanes of this right-hand-traffic
 road) has no lane change into the ego's lane: it pulls out nosed out as a parked car is, across the
 oncoming lanes along the turn of :func:`~vei_scenario.language.behaviours.turn_into.roadside_path_st`,
@@ -21,6 +26,7 @@ from vei_scenario.language.behaviours.base import (
     Condition,
     Parameter,
     Step,
+    lane_change_to,
     lane_change_to_ego,
     speed_action,
     value,
@@ -100,11 +106,68 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     )
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
     actions = [lane_change_to_ego(ctx.ego, duration), speed_action(after, rate=rate)]
+    if behind_in_ego_lane(ctx):
+        return from_behind(ctx, cfg, actions)
     # if the gap never comes (the ego slows for something else), it cuts in when it planned to anyway
     late = float(cfg.get("lead_s", 2.5)) + LATE_S
     if ctx.actor_speed_mps > ctx.ego_speed_mps + FASTER_MPS:  # faster than the ego: in once it is gap_m ahead
         return [Step("cut_in", actions, conditions=[Condition("ego_beyond", gap)], fallback_s=late)]
     return [Step("cut_in", actions, conditions=[Condition("ego_within", gap)], fallback_s=late)]
+
+
+#: How much faster than the ego (m/s) one that cuts in from behind it comes past, at the least.
+PASS_GAIN_MPS = 5.0
+#: About how long (s) one that cuts in from behind takes from its start to the gap ahead of the ego.
+PASS_S = 8.0
+#: How hard (m/s²) it speeds up as it pulls out to pass, within what its vehicle can do.
+PASS_ACCEL_MPS2 = 2.5
+
+
+def behind_in_ego_lane(ctx: ActorContext) -> bool:
+    """Whether the actor starts behind the ego in the ego's own lane on the ego's road (its spawn
+    relation ``behind``): from there a change "into the ego's lane" goes nowhere, and slower than the
+    ego it would never be in front of it."""
+    if ctx.on_another_arm() or ctx.actor_lane_id != ctx.ego_lane_id:
+        return False
+    forward = 1.0 if ctx.ego_lane_id < 0 else -1.0  # (right-hand traffic: lanes of -s run along s)
+    return (ctx.ego_s_m - ctx.actor_s_m) * forward > 0.0
+
+
+def passing_lane(ctx: ActorContext) -> int:
+    """The lane beside the ego's that one coming past it uses: the next one of the ego's direction to
+    its left, else (the ego in the lane by the centre line) the one to its right, else (one lane each
+    way) the oncoming lane over the centre line."""
+    if ctx.ego_lane_id < -1:
+        return ctx.ego_lane_id + 1
+    if ctx.lanes > 1:
+        return ctx.ego_lane_id - 1
+    return 1
+
+
+def pass_speed(ego_speed: float, speed: float, behind_m: float, cfg: dict) -> float:
+    """The speed (m/s) one starting ``behind_m`` behind the ego at ``speed`` comes past it at, to cut
+    in from behind: at least :data:`PASS_GAIN_MPS` more than the faster of the two, and enough to be
+    ``gap_m`` ahead about :data:`PASS_S` after the start. Why one helper: the writer gives the
+    vehicle this top speed (a rider at its kind's usual top never gets past a faster ego)."""
+    gap = value(cfg, PARAMETERS, "gap_m")
+    return max(max(ego_speed, speed) + PASS_GAIN_MPS, ego_speed + (behind_m + gap) / PASS_S)
+
+
+def from_behind(ctx: ActorContext, cfg: dict, cut: list) -> list[Step]:
+    """Out into :func:`passing_lane`, past the ego faster than it (by enough to be ``gap_m`` ahead
+    about :data:`PASS_S` after the start, and at least :data:`PASS_GAIN_MPS`), and in with ``cut``
+    (the cut-in's lane change and brake) once the free-space gap ahead is ``gap_m``. Why level first:
+    the distance condition has no sign, and ``gap_m`` behind would trigger it before the pass."""
+    duration = value(cfg, PARAMETERS, "lane_change_s")
+    gap = value(cfg, PARAMETERS, "gap_m")
+    wanted = pass_speed(ctx.ego_speed_mps, ctx.actor_speed_mps, abs(ctx.ego_s_m - ctx.actor_s_m), cfg)
+    fast, accel = ctx.reachable(wanted, PASS_ACCEL_MPS2)
+    out = [lane_change_to(passing_lane(ctx), duration), speed_action(fast, rate=accel)]
+    return [
+        Step("pull_out", out, hold_s=0.0),
+        Step("alongside", [speed_action(fast, rate=accel)], conditions=[Condition("ego_within", 0.01)]),
+        Step("cut_in", cut, conditions=[Condition("ego_beyond", gap)]),
+    ]
 
 
 def pull_out_distance_m(ego_speed: float, cfg: dict) -> float:
