@@ -458,15 +458,22 @@ _ADVERBS = frozenset({"still", "then", "just", "eventually", "nevertheless", "fi
 _AT_HEDGES = frozenset({"at", "about", "around", "roughly", "approximately", "an", "a", "estimated", "maybe", "some"})
 
 
+#: Nouns of the moment two road users meet ("contact at 3 km/h", "impact at 20 mph"): a speed said "at" after one
+#: is the speed of that moment, as one said after a verb of striking is.
+IMPACT_NOUNS = frozenset({"contact", "impact", "collision"})
+
+
 def impact_after_braking(tokens: list[str], i: int) -> bool:
     """Whether the speed at ``i`` is one the ego hits something at ("we struck it at an estimated 12
-    mph"), said after a braking ("the brakes came on", "I braked"): the speed left at impact, which is
-    no speed the ego starts at."""
+    mph", "Ego brakes hard, contact at 3 km/h"), said after a braking ("the brakes came on", "I braked"):
+    the speed left at impact, which is no speed the ego starts at."""
     k = i - 1
     while k > 0 and tokens[k] in _AT_HEDGES and tokens[k] != "at":
         k -= 1
     if tokens[k] != "at":
         return False
+    if k >= 1 and tokens[k - 1] in IMPACT_NOUNS:  # ("Ego brakes hard, contact at 3 km/h": the impact's speed)
+        return any(_egos_braking(tokens, b) for b in range(k - 1))
     verb = next(
         (v for v in range(k - 1, max(k - 6, -1), -1) if CONTACT & set(lemmas(tokens[v]).get("VERB", (tokens[v],)))),
         None,

@@ -93,22 +93,54 @@ _UNITS = _UNIT_FORMS + [
 ]
 
 
-def _number_value(words: str) -> int | None:
-    """The value of a number in words ("a hundred and ten": 110), or None."""
-    total, current, seen = 0, 0, False
+def _numbers_said(words: str) -> list[int] | None:
+    """The numbers a run of number words says, one after another, or None where a word is none: English
+    builds one number by a rule ("forty-five": a tens word, then a unit of one to nine; "a hundred and
+    ten": a hundred, then the tens and units), and a word that cannot go on the number before it starts
+    a number of its own ("fifteen sixteen", "forty forty-five", "five fifteen": two numbers, not 31, 85
+    and 20)."""
+    numbers: list[int] = []
+    current, fresh = 0, True  # the number being built; whether it has no word yet
     for w in re.split(r"[\s-]+", words.strip()):
-        if w == "and":
+        if w == "and" or not w:
             continue
-        if w in _ONES:
-            current += _ONES[w]
-        elif w in _TENS:
-            current += _TENS[w]
-        elif w == "hundred":
-            current = max(current, 1) * 100
+        below = current % 100  # (what follows its hundreds: the tens and units said so far)
+        after_hundreds = fresh or (below == 0 and current > 0)  # (nothing yet, or only hundreds)
+        if w in _ONES and (after_hundreds or (below >= 20 and below % 10 == 0 and 0 < _ONES[w] < 10)):
+            current += _ONES[w]  # ("forty-five", "a hundred and two", "a hundred and fifteen")
+        elif w in _TENS and after_hundreds:
+            current += _TENS[w]  # ("forty", "a hundred and twenty")
+        elif w == "hundred" and current < 100:
+            current = max(current, 1) * 100  # ("a hundred", "two hundred", "hundred")
+        elif w in _ONES or w in _TENS:
+            numbers.append(current)  # (a word that goes on no number before it: the next number)
+            current = _ONES.get(w, _TENS.get(w, 0))
         else:
             return None
-        seen = True
-    return total + current if seen else None
+        fresh = False
+    return None if fresh else [*numbers, current]
+
+
+def _number_value(words: str) -> int | None:
+    """The value of a number in words ("a hundred and ten": 110), or None where the words say no one
+    number (see :func:`_numbers_said`)."""
+    said = _numbers_said(words)
+    return said[0] if said and len(said) == 1 else None
+
+
+def _range_said(words: str) -> str | None:
+    """The number or range of numbers a run of number words says where it is no one number: a number said
+    again is that number ("thirty - thirty": 30, a speaker's hesitation), and two numbers, the second
+    above the first by no more than the first again, are a range said without its "to" ("fifteen
+    sixteen", "forty forty-five", "fifteen twenty": 15-16, 40-45, 15-20), as "doing 40-45" is. Others
+    ("five fifteen", "six thirty": a time; "nine nine nine": a number dialled) say no quantity: None."""
+    said = _numbers_said(words)
+    if not said or len(said) != 2:
+        return None
+    low, high = said
+    if low == high:
+        return str(low)
+    return f"{low}-{high}" if 0 < low < high <= 2 * low else None
 
 
 def _after_modifiers(text: str, m: re.Match) -> bool:
@@ -131,12 +163,16 @@ def _numbers_in_words(text: str) -> str:
         before = before or _after_modifiers(text, m)  # ("at a cautious thirty", "at a very sensible sixty-five")
         if after is None and before:
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
+            if value is None and (said := _range_said(m.group(1))) is not None:
+                return said if int(said.split("-")[0]) >= 15 else m.group(0)  # ("doing forty forty-five")
             return str(value) if value is not None and value >= 15 else m.group(0)
         joined = "-" in text[m.end() : after.start(1)] if after is not None else False
         if after is None or (joined and after.group(1)[0] in "lfy"):
             return m.group(0)  # ("two-lane road", "a six-foot hedge" keep their words: a name, a size)
         value = _number_value(m.group(1))
-        return m.group(0) if value is None else str(value)
+        if value is None:
+            return _range_said(m.group(1)) or m.group(0)  # ("fifteen sixteen mile an hour": 15-16 mph)
+        return str(value)
 
     return _NUMBER.sub(sub, text)
 
@@ -896,6 +932,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _HOUR_OF.sub(_hour_of, text)
     text = re.sub(r"\b(?:approx\.?|approximately|circa|ca\.|roughly|around|maybe|some|like)\s+(?=\d)", "about ", text)
     text = re.sub(r"~\s*(?=\d)", "about ", text)
+    # ("at an est. 15 mph", "speed est. 28 mph": "estimated" cut short, whose full stop ends no sentence)
+    text = re.sub(r"\b(?:an?\s+)?est(?:\.\s*|\s+)(?=\d)", "about ", text)
     text = re.sub(r"(\d+(?:\.\d+)?)\s*-\s*(?=km/h|mph|m/s|m\b)", r"\1 ", text)
     # "our speed is 100 km/h", "we have 40 km/h", "we are 50 km/h": the ego's speed
     text = re.sub(

@@ -963,6 +963,45 @@ def _subject_is_lateral(tokens: list[str], i: int) -> bool:
     return False
 
 
+#: Words that hedge or bound a number and say nothing else ("about", "approx.", "~", "just under"): a
+#: number after a noun past them is said of the noun as one right after it is ("cyclist approx. 15 km/h").
+_HEDGES = (_HEDGE_WORDS | APPROXIMATORS | {"ca", "circa", "est", "estimated"}) - {"some"}
+
+
+def _only_hedges(words: list[str]) -> bool:
+    """Whether ``words`` (between a noun and its number) are one or more hedges only (see :data:`_HEDGES`)."""
+    return bool(words) and all(w in _HEDGES for w in words)
+
+
+def _past_conversion(tokens: list[str], j: int) -> int:
+    """The index after a speed's conversion to another unit that starts at ``j`` ("55 mph (89 km/h)": the
+    reader's tokens keep "89 km/h" without its brackets), or ``j`` where none stands there."""
+    if j + 1 < len(tokens) and is_number(tokens[j]) and tokens[j + 1] in V.SPEED_UNITS:
+        return j + 2
+    return j
+
+
+def from_one_speed_to_another(tokens: list[str], i: int) -> tuple[float, int] | None:
+    """(the speed in m/s it changes to, the words used from ``i``) where the speed at ``i``, with its unit,
+    is the one a change of speed starts from and the one it changes to follows with its own unit ("slowed
+    from around 55 mph (89 km/h) to about 20 mph (32 km/h)"): the speed it had, then the one it goes to,
+    as "from 55 to 20 mph" says it. A conversion of either into another unit is read with it. Else None."""
+    k = i - 1
+    while k >= 0 and tokens[k] in _HEDGES:
+        k -= 1
+    if k < 0 or tokens[k] != "from":
+        return None
+    j = _past_conversion(tokens, i + 2)
+    if tokens[j : j + 1] != ["to"]:
+        return None
+    j += 1
+    while j < len(tokens) and tokens[j] in _HEDGES:
+        j += 1
+    if j + 1 >= len(tokens) or not is_number(tokens[j]) or tokens[j + 1] not in V.SPEED_UNITS:
+        return None
+    return float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]], _past_conversion(tokens, j + 2) - i
+
+
 def _skip_back(tokens: list[str], j: int) -> int:
     while j >= 0 and tokens[j] in _LINKS:
         j -= 1
@@ -1000,9 +1039,10 @@ def owners(
             k -= 1
         if k >= 1 and tokens[k] == "of" and tokens[k - 1] in SPEED_HEADS:  # "speed of the bus 15 km/h"
             return (owner,)
-        if j == i - 1 and _in_a_place_phrase(tokens, owner):
+        right_after = j == i - 1 or (unit and _only_hedges(tokens[j + 1 : i]))  # ("ego ~50 km/h": "ego 50 km/h")
+        if right_after and _in_a_place_phrase(tokens, owner):
             return ()  # "steps out between parked cars 3 m/s": the cars say where; the clause says whose
-        if j == i - 1 and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
+        if right_after and (unit or after_ego(tokens, i)):  # "cyclist 15 km/h", "ego 50": of the noun before it
             return (owner,)
         if tokens[j + 1] == "at" and (k < 0 or tokens[k] in _CLAUSE_OPENERS) and not compared(tokens, k):
             return (owner,)  # "the van at 60 km/h overtakes ...": said of the subject opening its clause

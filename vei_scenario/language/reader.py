@@ -733,6 +733,8 @@ def _number(
         return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if Q.over_the_limit(tokens, i):  # ("8 mph over the limit": how far over, no one's speed)
         return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
+    if nxt in V.SPEED_UNITS and (changed := Q.from_one_speed_to_another(tokens, i)) is not None:
+        return "speed_range", (value * V.SPEED_UNITS[nxt], changed[0]), changed[1]  # ("from 55 mph to 20 mph")
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
