@@ -90,10 +90,11 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.comment_clause import without_comment_clauses
 from vei_scenario.language.elsewhere import stands_elsewhere
-from vei_scenario.language.function_words import DETERMINERS
+from vei_scenario.language.function_words import DETERMINERS, PHRASE_ENDS
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
+from vei_scenario.language.met_coming import met_coming, waits_facing
 from vei_scenario.language.miles_english import road_called_by_its_limit, said_in_miles_english, told_in_miles_english
 from vei_scenario.language.motion import (
     chains,
@@ -1801,6 +1802,8 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if sides.opposite_approach(junction, a.kind, a.far_side, first):
         return "junction_opposite"
     rides = a.kind != "pedestrian"  # (a rider at a junction takes the road as a vehicle does)
+    if facing := waits_facing(a.relation == "oncoming", first, rides, side, junction):
+        return facing  # ("a bus coming the other way stopped and waved me on": where it comes from)
     if first == "give_way" or (junction and rides and a.goes_on and first == "cut_in" and a.relation != "oncoming"):
         # lets the ego pass (or is said not to): where their paths meet, in a side road or at the kerb
         where = "junction" if vehicle or (junction and not a.kerb) else "roadside"
@@ -1856,6 +1859,13 @@ def _resolve_relation(a: _Actor, map_kind: str | None, left_hand: bool = False) 
     if side and (lateral or a.relation is None or a.lane_side):
         return side
     return a.relation or side or ("ahead" if a.followed else None)  # (the lead car: ahead in the ego's lane)
+
+
+def _place_of_its_own(tokens: list[str], end: int, place_start: int) -> bool:
+    """Whether a place named at ``place_start``, after a word of coming towards that ends at ``end``, is
+    in a phrase of its own (a preposition between: "travelling in the opposite direction on Elm
+    Street"): the road it comes along, not the place approached ("approaching the traffic lights")."""
+    return any(w in PHRASE_ENDS for w in tokens[end:place_start])
 
 
 #: The words of coming into sight over or round a place ("came over the crest"): oncoming, the place
@@ -2050,6 +2060,7 @@ def _read(text: str) -> Reading:
                 and nxt is not None
                 and nxt.slot == "map"
                 and m.words not in _INTO_SIGHT
+                and not _place_of_its_own(scanned, m.end, nxt.start)
             ):
                 prev = m  # "approaching the traffic lights": the ego's approach to a place, no one oncoming
                 continue
@@ -2939,6 +2950,9 @@ def _read(text: str) -> Reading:
             behaviours = behaviours[crossing_at:]  # ("... stops; then crosses from the left"): from the kerb
         a.behaviours = behaviours
         a.kerb_side = a.kerb_side or from_cover.side_of_the_cover(a, a.cover)
+        if a.relation is None and not a.said and met_coming(scanned, a.named_end):
+            a.relation = "oncoming"  # ("we met a tractor coming up the lane": face to face)
+            a.said.add("oncoming")
         spec.relation = _resolve_relation(a, r.map_kind, left_hand)
         spec.relation = sides.kerb_overtaker(
             spec.relation, behaviours, bool(a.side or a.kerb_side or a.lane_side), any(x.object_of is a for x in actors)
