@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from vei_scenario.language.function_words import WHERE_PREPOSITIONS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.word_mention import word_mention
 
@@ -34,6 +35,8 @@ _WAITING = frozenset(("wait", "stop", "slow", "brake", "pause", "hold", "pull"))
 #: Words of a phrase that says what a person has with them, between the road user and its verb ("a
 #: woman with a pram", "an old man with a stick"): skipped when no mention stands in it.
 _WITH_PHRASE = frozenset(("with", "pushing", "carrying", "holding", "walking"))
+#: Mentions of where a road user is, said right after it ("a man on the pavement").
+_WHERE_SLOTS = frozenset(("kerb", "kerb_side", "side"))
 #: Mentions that may be the bare verb after the road user.
 _VERB_SLOTS = frozenset(("behaviour", "unknown_verb", "ego_verb"))
 #: Words that put a vehicle with the person named before it ("a lad on a bike", "a bloke in a van").
@@ -51,17 +54,18 @@ def _bare_verb(word: str) -> bool:
     return word in verbs and (not word.endswith(("ed", "ing")) or verbs == (word,))
 
 
-def _experienced_at(tokens: list[str], start: int) -> str | None:
+def _experienced_at(tokens: list[str], start: int, crossing: bool = False) -> str | None:
     """How the road user whose mention starts at ``start`` is said to act, by the verb before its noun
     phrase (only articles, quantifiers and adjectives, no verb, between): "bare" after "have", "get",
     "let" ("had a van pull out"), "seen" after a verb of seeing, "to"
-    after "allow" or after "for" said after a verb of waiting ("waited for a kid to cross"), else None."""
+    after "allow" or after "for" said after a verb of waiting ("waited for a kid to cross"), else None.
+    ``crossing``: the road user's own verb is a crossing (see :func:`_stood_before`)."""
     i = start - 1
     while i >= 0 and start - i <= 5:
         word = tokens[i]
         said = set(lemmas(word).get("VERB", ()))
-        if said & _LETTING and _stood_before(tokens, i):
-            return None  # ("I had stopped to let a girl cross when ...": the scene opens on the ego standing)
+        if said & _LETTING and not crossing and _stood_before(tokens, i):
+            return None  # ("I had stopped to let a bus pull out when ...": the scene opens on the ego standing)
         if said & (_EXPERIENCE | _LETTING):
             return "bare"  # ("had", "has", "got", "have", "let")
         if said & _SEEING:
@@ -90,7 +94,10 @@ def had_doing(tokens: list[str], j: int, verb: int) -> bool:
 def _stood_before(tokens: list[str], i: int) -> bool:
     """Whether "to let" at ``tokens[i]`` follows a stop in the past perfect ("had stopped to let", "had
     pulled up to let"): the ego already stands as the scene opens (the reader starts it at 0 km/h), and
-    whom it had stopped for is what came before the scene, not a road user that meets it."""
+    a vehicle it had stopped for ("to let a bus pull out") did its move before the scene, not a road
+    user that meets it. A walker or rider it had stopped to let cross is another matter (the caller
+    does not ask then): the crossing goes on in front of the standing ego, and is the scene ("I had
+    stopped to let a girl cross when the car behind overtook me": she crosses as the car goes by)."""
     if tokens[i - 1 : i] != ["to"]:
         return False
     before = tokens[max(0, i - 5) : i - 1]
@@ -108,12 +115,13 @@ def _verb_fits(how: str, word: str, between: list[str]) -> bool:
     return _bare_verb(word)
 
 
-def _between_ok(between: list[str]) -> bool:
+def _between_ok(between: list[str], crossing: bool = False) -> bool:
     """Whether the words between the road user and its verb leave them one clause: nothing, one adverb
     ("had a lad just step out"), "to", or a phrase of what the person has with them ("a woman with a
-    pram")."""
+    pram"); before a crossing also a short phrase of where the person waits ("stopped for a man on the
+    pavement to cross", "let a woman at the kerb cross"): it says where the crossing starts."""
     rest = between[:-1] if between[-1:] == ["to"] else between
-    if rest and rest[0] in _WITH_PHRASE:
+    if rest and (rest[0] in _WITH_PHRASE or (crossing and rest[0] in WHERE_PREPOSITIONS)):
         return len(rest) <= 4 and all(w.isalpha() for w in rest)
     return len(rest) <= 1
 
@@ -161,11 +169,16 @@ def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
             j = k + 1
             while j < len(mentions) and mentions[j].slot == "actor" and mentions[j].prev in _WITH:
                 j += 1  # ("had a lad on a bike roll off the kerb": the rider and what he rides)
+            said_end = mentions[j - 1].end  # (where the road user's noun phrase ends)
+            if j < len(mentions) and mentions[j].slot in _WHERE_SLOTS and tokens[said_end] in WHERE_PREPOSITIONS:
+                while j < len(mentions) and mentions[j].slot in _WHERE_SLOTS:
+                    j += 1  # ("stopped for a man on the pavement to cross": where he waits, said with him)
             nxt = mentions[j] if j < len(mentions) else None
             if nxt is None or nxt.slot not in _VERB_SLOTS:
                 continue
-            between = tokens[mentions[j - 1].end : nxt.start]
-            how = _experienced_at(tokens, m.start) if _between_ok(between) else None
+            crossing = nxt.slot == "behaviour" and nxt.value[0] == "cross_in_front"
+            between = tokens[said_end : nxt.start]
+            how = _experienced_at(tokens, m.start, crossing) if _between_ok(between, crossing) else None
             if how is None or not _verb_fits(how, nxt.words.split()[0], between):
                 continue
             first = k

@@ -22,6 +22,8 @@ SUBJECT_PRONOUNS = frozenset({"i", "we", "he", "she", "they", "you"})
 #: pallets lying in the lane": "the pallets").
 PHRASE_ENDS = frozenset(("of", "at", "on", "in", "from", "behind", "and", "with", "to", "without", "lying", "which",
                          "that", "who", "before", "after", "as", "while", "by", "for", "ahead"))  # fmt: skip
+#: Prepositions that say where someone is ("a man on the pavement", "a girl at the kerb").
+WHERE_PREPOSITIONS = frozenset(("on", "at", "by", "in", "near", "beside"))
 #: Conjunctions that end a clause, and with it the scope of a negation or a hedge.
 CLAUSE_BREAKS = frozenset(
     ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
