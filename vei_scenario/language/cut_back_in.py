@@ -7,8 +7,11 @@ of me", "undertook us and cut back into lane 4 directly in front of us"), with a
 sideways and a place close in front of the ego, the return is into the ego's lane, right where the ego
 is heading: the writer reports a cut-in, not only that the overtake ended.
 
-Guards: a plain return ("pulled back in", "moved back"), one that ends nowhere near the ego ("cut back
-in well ahead"), one after a pass of someone else ("overtook the lorry and cut back in front of me":
+A verb of a sudden move with "in again" ("swung in again right in front of me") is such a return too:
+"again" after the particle says the road user is back in the lane it left.
+
+Guards: a plain return ("pulled back in", "moved back", "pulled in again"), one that ends nowhere near
+the ego ("cut back in well ahead"), one after a pass of someone else ("overtook the lorry and cut back in front of me":
 the pass is not of the ego), or in a chain that says the road user comes the wrong way or names an
 oncoming road user ("swerved back in front of me to avoid an oncoming car"), stays a return. So does
 any return on a road said to have one lane each way ("one lane each way", "a single carriageway", "a
@@ -39,9 +42,14 @@ def _two_way(m) -> bool:
     return m.slot == "wrong_way" or (m.slot == "relation" and m.value == "oncoming")
 
 
-def _sudden_return(m) -> bool:
-    """Whether ``m`` is a return said with a verb of a sudden move sideways ("cut back", "swerved back")."""
-    return m.slot == "returns" and sudden(m.words.split()[0])
+def _sudden_return(m, tokens: list[str]) -> bool:
+    """Whether ``m`` is a return said with a verb of a sudden move sideways ("cut back", "swerved back"),
+    or such a verb + "in again" ("swung in again"): "again" after the particle says the road user is
+    back where it was, the lane it pulled out of, as "back in" does."""
+    if m.slot == "returns":
+        return sudden(m.words.split()[0])
+    again = m.slot in ("unknown_verb", "behaviour") and tokens[m.end : m.end + 2] == ["in", "again"]
+    return again and len(m.words.split()) == 1 and sudden(m.words)
 
 
 def sudden_returns_at_the_ego(clauses: list, tokens: list[str]) -> list:
@@ -58,7 +66,7 @@ def sudden_returns_at_the_ego(clauses: list, tokens: list[str]) -> list:
             for k, m in enumerate(kept):
                 nxt = kept[k + 1] if k + 1 < len(kept) else None
                 passed = passed or _passes_the_ego(m, nxt)
-                if passed and _sudden_return(m) and "VERB" in lemmas(tokens[m.start]):
+                if passed and _sudden_return(m, tokens) and "VERB" in lemmas(tokens[m.start]):
                     if ends_close_at_the_ego(tokens, m.start):
                         kept[k] = replace(m, slot="behaviour", value=("cut_in", {}))
         out.append((link, kept))

@@ -2972,9 +2972,12 @@ def _the_ego_rear_at(tokens: list[str], j: int) -> int | None:
 
 #: Words that measure a stretch of road or time kept ("for two miles", "for some distance", "for a while").
 _STRETCH = frozenset(("mile", "miles", "km", "kilometre", "kilometres", "kilometer", "kilometers", "minute",
-                      "minutes", "while", "ages", "distance", "way", "stretch"))  # fmt: skip
+                      "minutes", "while", "ages", "distance", "way", "stretch", "journey", "trip", "time"))  # fmt: skip
 #: How many words may stand between "for" and the word of its stretch ("for the best part of two miles").
 _STRETCH_WORDS = 6
+#: How a stretch said without "for" opens: a noun phrase of the whole of it ("the whole way", "all the
+#: way", "the entire journey"), which English uses bare as an adverb of extent.
+_WHOLE_OF = (("the", "whole"), ("the", "entire"), ("all", "the"), ("the", "full"))
 
 
 def _a_degree(tokens: list[str], i: int) -> bool:
@@ -2986,12 +2989,17 @@ def _a_degree(tokens: list[str], i: int) -> bool:
 
 def _behind_the_ego_for_a_stretch(tokens: list[str], j: int) -> int | None:
     """Where "behind" + the ego + "for" + a stretch ends when said from ``tokens[j]`` ("behind us for
-    some distance", "behind me for two miles"), or None. Why: a road user kept behind the ego over a
+    some distance", "behind me for two miles"), or + a stretch said whole with no "for" ("behind me the
+    whole way", "behind us all the way"), or None. Why: a road user kept behind the ego over a
     stretch of road is one that follows it, as much as one sat on its tail."""
     if tokens[j] != "behind":
         return None
     k = j + 1 + (tokens[j + 1 : j + 2] == ["the"])
-    if tokens[k : k + 1] == [] or tokens[k] not in _EGO_WORDS or tokens[k + 1 : k + 2] != ["for"]:
+    if tokens[k : k + 1] == [] or tokens[k] not in _EGO_WORDS:
+        return None
+    if tuple(tokens[k + 1 : k + 3]) in _WHOLE_OF and tokens[k + 3 : k + 4] and tokens[k + 3] in _STRETCH:
+        return k + 4  # ("behind me the whole way", "behind us all the way"): the stretch said bare
+    if tokens[k + 1 : k + 2] != ["for"]:
         return None
     for m in range(k + 2, min(k + 2 + _STRETCH_WORDS, len(tokens))):
         if tokens[m] in _STRETCH:

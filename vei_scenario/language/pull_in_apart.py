@@ -63,7 +63,9 @@ _ONTO = frozenset(("on", "onto", "into"))
 _NOT_IN_FRONT = frozenset(("behind", "alongside", "beside", "past", "after"))
 #: Verbs of a sudden move sideways (the lexicon's "dive/lunge/swoop/... in front" of a cut-in), by lemma:
 #: said of a pull-in, a close one.
-_SUDDEN = frozenset(("cut", "dive", "lunge", "swoop", "nip", "lurch", "duck", "dart", "swerve", "veer", "barge"))
+_SUDDEN = frozenset(
+    ("cut", "dive", "lunge", "swoop", "nip", "lurch", "duck", "dart", "swerve", "veer", "barge", "swing")
+)
 
 
 def _the_ego_at(tokens: list[str], k: int) -> bool:

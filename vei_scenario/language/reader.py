@@ -64,6 +64,7 @@ from vei_scenario.language import (
     narrator_vehicle,
     no_lane_beside,
     off_a_place,
+    out_of_the_lane,
     parked_rows,
     participle_aside,
     protagonist,
@@ -1926,7 +1927,8 @@ def _read(text: str) -> Reading:
     )
     tokens = _tokens(text)
     said = " ".join(tokens)  # (the whole text as the reader reads it, for what is stated of it as a whole)
-    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(into_the_ego_lane(clauses, scanned), scanned)))
+    clauses = out_of_the_lane.leaving_the_ego_lane(into_the_ego_lane(clauses, scanned), scanned)  # ("out of my lane")
+    clauses = out_to_overtake(participle_of_state(give_the_ego_the_way(clauses, scanned)))
     clauses = lane_to_front.into_the_lane_in_front(clauses, scanned)  # ("in the left lane came in front of me")
     clauses = way_across.to_the_other_side(way_across.over_the_road(clauses, scanned), scanned)  # ("over the road")
     clauses = across_alone.across_alone(clauses, scanned)  # ("out from between the vans, straight across")
