@@ -434,8 +434,8 @@ def _at_the_wheel(tokens: list[str], kind_at: KindAt, known: Known, dropped: lis
                 if said[i : i + 3] == ["the", noun, "driver"]:
                     said[i : i + 3] = ["the", "ego"]
         owner = tokens[k + 1] if k + 1 < len(tokens) and tokens[k + 1] in PRONOUNS_OF else None
-        owner = owner or _owner_by_pronouns(said)
-        return _pronouns_as_ego(said, owner, kind_at, known) if owner else said
+        owner = owner or owner_by_pronouns(said)
+        return pronouns_as_ego(said, owner, kind_at, known) if owner else said
     return tokens
 
 
@@ -456,7 +456,7 @@ def _bracket_opening(tokens: list[str], k: int) -> int | None:
     return b if b is not None and tokens[b] == "(" and b >= 1 else None
 
 
-def _owner_by_pronouns(tokens: list[str]) -> str | None:
+def owner_by_pronouns(tokens: list[str]) -> str | None:
     """The possessive ("her", "his") of the first subject pronoun after "the ego" in ``tokens``
     ("Caller rides a moped. She says she was doing ... missed him"): the person named with no pronoun
     of their own is the subject the story goes on with. None where no person of that gender could be
@@ -474,7 +474,7 @@ def _owner_by_pronouns(tokens: list[str]) -> str | None:
 PRONOUNS_OF = {"her": ("she", "her"), "his": ("he", "him")}
 
 
-def _pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Known) -> list[str]:
+def pronouns_as_ego(tokens: list[str], owner: str, kind_at: KindAt, known: Known) -> list[str]:
     """``tokens`` (a named driver already said "the ego") with the driver's pronouns after the ego
     said "the ego" too ("a van pulled out in front of her. She braked hard": the ego's reaction, not
     the van's), where no other person of that gender is named ("a girl ran out ... she stopped");
@@ -534,7 +534,7 @@ def _driving_subject(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
             continue
         dropped.extend(x for x in tokens[k + 1 : p.end] if x.isalpha() and x not in OWNING)
         out = [*tokens[: k + 1], *tokens[p.end : comma + 1], "the", "ego", *tokens[comma + 2 :]]
-        return _pronouns_as_ego(out, owner, kind_at, known)
+        return pronouns_as_ego(out, owner, kind_at, known)
     return tokens
 
 
@@ -646,7 +646,7 @@ def _followed_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
             out[q.start : q.end] = ["the", "ego"]
     out[p.start : end] = ["the", "ego"]
     out = as_ego(out, kind_at, known, tokens[owned.end - 1], dropped)
-    return _pronouns_as_ego(out, owner, kind_at, known)
+    return pronouns_as_ego(out, owner, kind_at, known)
 
 
 def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
@@ -688,7 +688,7 @@ def _person_driving(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
             out = as_ego(out, kind_at, known, tokens[driven.end - 1], dropped)
         dropped.extend(w for w in out[start : p.end] if w.isalpha() and w not in DEFINITE | INDEFINITE)
         out[start : p.end] = ["the", "ego"]
-        return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
+        return pronouns_as_ego(out, owner, kind_at, known) if owner else out
     return tokens
 
 
@@ -1354,7 +1354,7 @@ def _party_took(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
             if out[i] == w and out[i - 1] not in INDEFINITE:
                 out[i - (out[i - 1] in PARTY_OWNERS | DEFINITE) : i + 1] = ["the", "ego"]
         owner = _party_gender(w)
-        return _pronouns_as_ego(out, owner, kind_at, known) if owner else out
+        return pronouns_as_ego(out, owner, kind_at, known) if owner else out
     return tokens
 
 
@@ -1419,7 +1419,7 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
                 out[i : i + len(owner)] = ["the", "ego"]
             i += 1
         out = driver_is_ego(out, kind_at, known, dropped)  # ("the driver waited": its driver)
-        return _pronouns_as_ego(out, gender, kind_at, known) if gender else out
+        return pronouns_as_ego(out, gender, kind_at, known) if gender else out
     return written
 
 

@@ -29,3 +29,14 @@ CLAUSE_BREAKS = frozenset(
     ("but", "and", "then", "so", "because", "when", "while", "whilst", "until", "till", "although", "though")
 )
 BE = frozenset({"am", "is", "are", "was", "were", "be", "been", "being", "sat", "sitting"})
+#: Words that name a time, not a person: "today's", "Friday's", "this morning's" own nothing on the road.
+WORDS_OF_TIME = frozenset(
+    ("today", "yesterday", "tomorrow", "tonight", "morning", "afternoon", "evening", "night", "day", "week",
+     "weekend", "month", "year", "season", "monday", "tuesday", "wednesday", "thursday", "friday", "saturday",
+     "sunday", "spring", "summer", "autumn", "winter", "last", "next")
+)  # fmt: skip
+#: Words that stand where a noun phrase does but name no one ("there's", "it's", "what's", "here's").
+NO_ONE = frozenset(
+    ("there", "here", "it", "that", "this", "what", "who", "where", "everyone", "everybody", "someone", "somebody",
+     "nobody", "he", "she", "they", "one", "let", "how", "why", "when")
+)  # fmt: skip

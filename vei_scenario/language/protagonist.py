@@ -148,7 +148,7 @@ def _past_bare_relative(tokens: list[str], k: int) -> int:
     else:
         return 0
     for m in range(j + 1, min(len(tokens), j + 12)):
-        if tokens[m - 1] not in DEFINITE | INDEFINITE and (v := _verb_of_reacting(tokens, m)):
+        if tokens[m - 1] not in DEFINITE | INDEFINITE and (v := verb_of_reacting(tokens, m)):
             return v  # (not a noun after its article: "pulling away from a stop")
         w = tokens[m]
         if w in _CLAUSE_ENDS or (w.isalpha() and set(lemmas(w)) <= {"VERB", "AUX"} and "VERB" in lemmas(w)):
@@ -193,14 +193,14 @@ def _verbs_of_reacting(tokens: list[str], p, first: bool = False) -> list[int]:
     at = []
     if first:
         end = sentence_span(tokens, p.end)[1]
-        at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := _verb_of_reacting(tokens, k + 1))]
+        at = [v for k in range(p.end, end) if tokens[k] in ("and", "but") and (v := verb_of_reacting(tokens, k + 1))]
     aside = _past_aside(tokens, p.end)
-    if v := _verb_of_reacting(tokens, aside) or (aside == p.end and _past_bare_relative(tokens, p.end)):
+    if v := verb_of_reacting(tokens, aside) or (aside == p.end and _past_bare_relative(tokens, p.end)):
         at.append(v)
     return at
 
 
-def _verb_of_reacting(tokens: list[str], k: int) -> int:
+def verb_of_reacting(tokens: list[str], k: int) -> int:
     """Where a verb of reacting stands at ``k``, past auxiliaries and adverbs, else 0."""
     for _ in range(4):
         if k >= len(tokens):

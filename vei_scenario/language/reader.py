@@ -65,6 +65,7 @@ from vei_scenario.language import (
     no_lane_beside,
     off_a_place,
     out_of_the_lane,
+    owned_by_name,
     parked_rows,
     participle_aside,
     protagonist,
@@ -863,6 +864,7 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = model_said_again(tokens, _kind_at, _known)  # ("a Honda Civic ... the Civic": the Honda)
     tokens = protagonist.without_witness(tokens, framed)  # ("I saw a lad run the red": a witness)
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
+    tokens = owned_by_name.frame(tokens, _kind_at, _known, framed)  # ("Lena's Mini", "the survey team's van")
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
     tokens = generic_ego.frame(tokens, _kind_at, _known, framed)  # (the ego as drivers in general)
     tokens = ego_speed.at_the_limit(tokens)  # ("doing the 20 limit": at 20)
