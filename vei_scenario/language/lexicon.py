@@ -38,16 +38,21 @@ SCOOTER_OPERATORS = ("lime", "bird", "tier", "voi", "dott", "bolt", "spin", "bea
 #: The words for each kind of road user in the languages whose speakers write English for a report, a
 #: forum or a translated statement and keep the word of their own ("a Lkw changed onto my lane", "a guy
 #: on a patinete", "the piéton"): German, French, Spanish, Portuguese, Italian, Dutch, Polish, Czech,
-#: Turkish, in plain letters (the reader drops accents: :func:`normalise.plain_letters`) and in the
-#: plural where it is no English plural. Words that are also English words ("rower", "step", "roller",
-#: "auto", "kolo", "pullman") are left out: there they name something else ("a rower on the river",
-#: "an auto repair shop").
+#: Turkish, Hungarian and South Slavic, Swedish, Norwegian, Danish, Finnish, Russian in Latin letters,
+#: Indonesian and Malay, Vietnamese (a kind's phrase after "xe", vehicle), in plain letters (the reader
+#: drops accents: :func:`normalise.plain_letters`) and in the plural where it is no English plural.
+#: Words that are also English words or names ("rower", "step", "roller", "auto", "kolo", "pullman",
+#: "lori", "mobil") are left out: there they name something else ("a rower on the river", "an auto
+#: repair shop", "my friend Lori"); such a word is kept only in a phrase of its language that no English
+#: sentence says ("elektromos roller", "xe container", "skuter listrik").
 LOANWORDS = {
     "truck": (
         "lkw", "lkws", "sattelzug", "sattelschlepper", "lastwagen", "lastkraftwagen", "sattelauflieger", "camion",
         "camions", "camiones", "caminhao", "caminhoes", "poids lourd", "poids-lourd", "poids lourds",
         "semi-remorque", "tir", "ciezarowka", "kamyon", "vrachtwagen", "vrachtauto", "vrachtwagens",
-        "nakladni auto", "autobus", "onibus", "otobus", "autocar", "autocarro",
+        "nakladni auto", "autobus", "onibus", "otobus", "autocar", "autocarro", "kamion", "kamiony", "kamioni",
+        "kamionok", "lastbil", "lastbilen", "lastbilar", "lastebil", "rekka", "kuorma-auto", "fura", "gruzovik",
+        "gruzoviki", "truk", "xe tai", "xe container", "xe khach", "xe buyt", "xe giuong nam",
     ),
     "van": (
         "kastenwagen", "lieferwagen", "kleintransporter", "camionnette", "camionnettes", "fourgon",
@@ -58,12 +63,16 @@ LOANWORDS = {
         "trottinette", "trottinettes", "trottinette electrique", "patinete", "patinetes", "patinete electrico",
         "patinete eletrico", "trotinete", "trotinetes", "trotineta", "monopattino", "monopattini",
         "monopattino elettrico", "hulajnoga", "hulajnogi", "hulajnodze", "kolobezka", "e-roller", "e-tretroller",
-        "tretroller", "elektroroller", "vmp", "edpm", "elektrikli scooter",
+        "tretroller", "elektroroller", "vmp", "edpm", "elektrikli scooter", "samokat", "samokaty", "elektrosamokat",
+        "elektrosamokaty", "elsparkcykel", "elsparkcykeln", "elsparkcyklar", "elsparkcyklarna", "elsparkesykkel",
+        "elsparkesykler", "ellobehjul", "sahkopotkulauta", "potkulauta", "elektromos roller", "elektromos rollers",
+        "rolleres", "romobil", "romobili", "elektricni romobil", "trotinetka", "skuter listrik", "skuter elektrik",
+        "otoped listrik", "xe scooter dien",
     ),
     "bicycle": (
         "fahrrad", "fahrrader", "radfahrer", "radfahrerin", "radler", "velo", "cycliste", "cyclistes",
         "bicicleta", "bicicletas", "bicicletta", "bici", "ciclista", "ciclistas", "ciclisti", "rowerzysta",
-        "rowerzystka", "fiets", "fietser", "fietsers", "cyklista", "bisiklet", "bisikletli",
+        "rowerzystka", "fiets", "fietser", "fietsers", "cyklista", "bisiklet", "bisikletli", "xe dap",
     ),
     "pedestrian": (
         "fussganger", "fussgangerin", "pieton", "pietonne", "pietons", "peaton", "peatones", "pedone", "pedoni",
@@ -74,7 +83,7 @@ LOANWORDS = {
         "osobowka", "araba", "osobni auto", "moto", "motos", "motocicleta", "motocyclette", "motorrad",
         "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer", "scooterino", "mofa",
         "mobylette", "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard", "motorradfahrer",
-        "motocyklista", "motorrijder",
+        "motocyklista", "motorrijder", "xe may", "xe hoi", "xe o to",
     ),
 }  # fmt: skip
 
@@ -408,6 +417,13 @@ CAR_NOUNS = (
     "bike taxi",
     "ojek",
     "habal-habal",
+    "bendskin",  # (a motorcycle taxi, Cameroon; Benin's "zemidjan", Vietnam's "xe om")
+    "bend-skin",
+    "zemidjan",
+    "xe om",
+    "bodaboda",
+    "pikipiki",  # (a motorbike, Swahili)
+    "kapcai",  # (a small motorcycle, Malaysian English)
     "scooty",  # (a motor scooter, Indian English)
     "superbike",
     "sportsbike",
@@ -454,11 +470,12 @@ CAR_NOUNS = (
 MOTOR_TWO_WHEELERS = frozenset((
     "motorcycle", "moped", "motor scooter", "motorbike", "motorcyclist", "powered two-wheeler", "two-wheeler",
     "ptw", "motor bike", "dirt bike", "boda-boda", "boda boda", "boda", "okada", "emt", "motorbike taxi",
-    "motorcycle taxi", "moto-taxi", "mototaxi", "moto taxi", "bike taxi", "ojek", "habal-habal", "scooty",
-    "superbike", "sportsbike", "sports bike", "trail bike", "pit bike", "moto", "motos", "motocicleta",
-    "motocyclette", "motorrad", "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer",
-    "mofa", "mobylette", "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard",
-    "motorradfahrer", "motocyklista", "motorrijder",
+    "motorcycle taxi", "moto-taxi", "mototaxi", "moto taxi", "bike taxi", "ojek", "habal-habal", "bendskin",
+    "bend-skin", "zemidjan", "xe om", "bodaboda", "pikipiki", "kapcai", "xe may", "scooty", "superbike",
+    "sportsbike", "sports bike", "trail bike", "pit bike", "moto", "motos", "motocicleta", "motocyclette",
+    "motorrad", "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer", "mofa", "mobylette",
+    "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard", "motorradfahrer", "motocyklista",
+    "motorrijder",
 ))  # fmt: skip
 #: Words of a vehicle's size that no dictionary has ("a 14-seater van"): words, not slips of another word
 #: ("skater" would be a road user of its own).
