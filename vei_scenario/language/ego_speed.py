@@ -23,7 +23,7 @@ from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.quantities import is_number
+from vei_scenario.language.quantities import SPEED_HEADS, is_number
 
 #: Words of going at a speed, before "the <number> limit" ("doing", "sitting at", "keeping to").
 GOING = frozenset(
@@ -461,6 +461,20 @@ _AT_HEDGES = frozenset({"at", "about", "around", "roughly", "approximately", "an
 #: Nouns of the moment two road users meet ("contact at 3 km/h", "impact at 20 mph"): a speed said "at" after one
 #: is the speed of that moment, as one said after a verb of striking is.
 IMPACT_NOUNS = frozenset({"contact", "impact", "collision"})
+
+
+def named_as_impact_speed(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is given under the name of the speed at impact ("Impact speed V1 approx.
+    28 km/h", "collision speed: 20 km/h"): what was left at the moment of contact, after any braking, which
+    is no speed a road user starts at where its speed before it is already said."""
+    k = i - 1
+    while k >= 0 and tokens[k] in _AT_HEDGES | {":", "was", "of"}:
+        k -= 1
+    for _ in range(4):  # (back over the road user it is said of, "V1", "the ego", where one is named)
+        if k >= 1 and tokens[k] in SPEED_HEADS and tokens[k - 1] in IMPACT_NOUNS:
+            return True
+        k -= 1
+    return False
 
 
 def impact_after_braking(tokens: list[str], i: int) -> bool:

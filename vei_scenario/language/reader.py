@@ -2033,6 +2033,9 @@ def _read(text: str) -> Reading:
             if whose and None not in whose and not (m.slot == "distance" and "ego" in whose):
                 for who in whose:  # ("van speed 60 km/h", "cyclist: 12 m ahead, 15 km/h"): whose its grammar says
                     if who == "ego" and m.slot == "speed":
+                        if r.ego_speed_mps is not None and ego_speed.named_as_impact_speed(scanned, m.start):
+                            ignored.append(m.words)  # ("V1 at 41 km/h ... Impact speed V1 approx. 28 km/h")
+                            continue
                         r.ego_speed_mps = ego_said = m.value
                     elif who != "ego":
                         _apply(m, who, r, link, added)
