@@ -981,11 +981,44 @@ def _past_conversion(tokens: list[str], j: int) -> int:
     return j
 
 
-def from_one_speed_to_another(tokens: list[str], i: int) -> tuple[float, int] | None:
-    """(the speed in m/s it changes to, the words used from ``i``) where the speed at ``i``, with its unit,
-    is the one a change of speed starts from and the one it changes to follows with its own unit ("slowed
-    from around 55 mph (89 km/h) to about 20 mph (32 km/h)"): the speed it had, then the one it goes to,
-    as "from 55 to 20 mph" says it. A conversion of either into another unit is read with it. Else None."""
+#: Words before a change "from X to Y" that say it slows ("slowed", "braked", "dropped", "eased off",
+#: "came down from"): it starts at X. Lemmas, and the nouns of the change ("a deceleration from").
+_SLOWING = frozenset(
+    ("slow", "slowdown", "brake", "braking", "decelerate", "deceleration", "drop", "ease", "reduce", "reduction")
+    + ("decrease", "lower", "fall", "scrub", "shed", "cut", "down")
+)
+#: Words before it that say it speeds up ("accelerated", "sped up", "picked up", "built up", "increased
+#: from"): it reaches Y. ("speed" is not one: "my speed from 50 mph to 30 mph" says neither.)
+_SPEEDING_UP = frozenset(("accelerate", "acceleration", "increase", "climb", "rise", "pick", "build", "gather", "up"))
+#: Words that end the clause of a change's verb, going back ("I braked, then accelerated from ...").
+_BEFORE_THE_VERB = frozenset((",", ";", ":", ".", "and", "then", "but", "when", "while", "as", "after"))
+
+
+def _slowing(tokens: list[str], k: int, first: float, second: float) -> bool:
+    """Whether the change whose "from" is at ``k``, from ``first`` to ``second`` (one unit), is a slowing:
+    by the verb of its clause ("slowed", "braked" / "accelerated", "sped up"), a slowing word first,
+    else, where the verb says neither ("went from", "drove from", "changed from"), by the numbers."""
+    said: set[str] = set()
+    for w in tokens[max(k - 5, 0) : k][::-1]:
+        if w in _BEFORE_THE_VERB:
+            break
+        forms = lemmas(w)
+        said |= {w, *forms.get("VERB", ()), *forms.get("NOUN", ())}
+    if said & _SLOWING:
+        return True
+    if said & _SPEEDING_UP:
+        return False
+    return second < first
+
+
+def from_one_speed_to_another(tokens: list[str], i: int) -> tuple[float, int, bool] | None:
+    """(the speed in m/s it changes to, the words used from ``i``, whether it slows) where the speed at
+    ``i``, with its unit, is the one a change of speed starts from and the one it changes to follows with
+    its own unit ("slowed from around 55 mph (89 km/h) to about 20 mph (32 km/h)", "accelerated from 20
+    mph to 40 mph"). A conversion of either into another unit is read with it. Else None. A slowing
+    starts at the first speed (the speed it had, then the one it goes to, as "from 55 to 20 mph" says
+    it); a speeding up reaches the second, the speed it has when what follows happens (see
+    :func:`_slowing`)."""
     k = i - 1
     while k >= 0 and tokens[k] in _HEDGES:
         k -= 1
@@ -999,7 +1032,9 @@ def from_one_speed_to_another(tokens: list[str], i: int) -> tuple[float, int] | 
         j += 1
     if j + 1 >= len(tokens) or not is_number(tokens[j]) or tokens[j + 1] not in V.SPEED_UNITS:
         return None
-    return float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]], _past_conversion(tokens, j + 2) - i
+    first = float(tokens[i]) * V.SPEED_UNITS[tokens[i + 1]]
+    second = float(tokens[j]) * V.SPEED_UNITS[tokens[j + 1]]
+    return second, _past_conversion(tokens, j + 2) - i, _slowing(tokens, k, first, second)
 
 
 def _skip_back(tokens: list[str], j: int) -> int:

@@ -737,7 +737,9 @@ def _number(
     if Q.over_the_limit(tokens, i):  # ("8 mph over the limit": how far over, no one's speed)
         return "skip", value, 2 if nxt in V.SPEED_UNITS else 1
     if nxt in V.SPEED_UNITS and (changed := Q.from_one_speed_to_another(tokens, i)) is not None:
-        return "speed_range", (value * V.SPEED_UNITS[nxt], changed[0]), changed[1]  # ("from 55 mph to 20 mph")
+        if not changed[2]:  # ("accelerated from 20 mph to 40 mph": the speed it reached, when what follows happens)
+            return "speed", changed[0], changed[1]
+        return "speed_range", (value * V.SPEED_UNITS[nxt], changed[0]), changed[1]  # ("slowed from 55 mph to 20 mph")
     if nxt in V.SPEED_UNITS:
         return "speed", value * V.SPEED_UNITS[nxt], 2
     if nxt in ("m", "meters", "metres", "meter", "metre"):
