@@ -19,6 +19,7 @@ from dataclasses import replace
 
 from vei_scenario.language.function_words import WHERE_PREPOSITIONS
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.not_told import asked_of, undone
 from vei_scenario.language.word_mention import word_mention
 
 #: Verbs (lemmas) of the narrator's experience that take a road user and a bare verb.
@@ -149,6 +150,16 @@ def _own_reaction_after(mentions: list, first: int, j: int, tokens: list[str]) -
     return set()
 
 
+def _not_told(before: list, tokens: list[str], i: int) -> bool:
+    """Whether the road user at ``tokens[i]`` is had, let or waited for only in a clause that tells
+    nothing done (:mod:`not_told`): a counterfactual ("I would have stopped for a man to cross but he
+    waved me on", "if I had let her cross, ..."), or a yes/no question about the one who let it
+    ("Should I have stopped for him to cross?"; the last named in ``before``). Its verb is then no act
+    of its own: nobody crossed."""
+    who = next((x for x in reversed(before) if x.slot in ("actor", "pronoun")), None)
+    return undone(tokens, i) or (who is not None and asked_of(tokens, who.start))
+
+
 def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with each road user said after "had"/"got" and before a bare verb of its own
     (:func:`_bare_verb`) starting a clause of its own, so the verb is its act ("we had a van pull out
@@ -181,6 +192,8 @@ def road_user_had_acting(clauses: list, tokens: list[str]) -> list:
             how = _experienced_at(tokens, m.start, crossing) if _between_ok(between, crossing) else None
             if how is None or not _verb_fits(how, nxt.words.split()[0], between):
                 continue
+            if _not_told(mentions[start:k], tokens, m.start):
+                continue  # ("I would have stopped for a man on the pavement to cross but he waved me on")
             first = k
             while first - 1 > start and mentions[first - 1].slot == "count":
                 first -= 1  # ("let two of our pupils cross": the count is the road user's)

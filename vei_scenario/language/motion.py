@@ -49,6 +49,7 @@ from vei_scenario.language.cut_back_in import sudden_returns_at_the_ego
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
 from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.not_told import asked_of
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
 from vei_scenario.language.quantities import OBJECT_PRONOUNS, SECONDS
 from vei_scenario.language.reading import ActorSpec
@@ -3015,8 +3016,9 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
     on my rear bumper"), or after "up against" it ("came up against our tailgate and hit it"), says
     where it touched, not where it follows. Following is a going road user's: not one on foot (nor
     people sat behind the writer in the car), nor a rider kept behind for a stretch (it rides at its
-    own pace), nor one said to stand ("parked behind me for a while"). A side said in the clause
-    ("up on my bumper on the inside") keeps the side."""
+    own pace), nor one said to stand ("parked behind me for a while"), nor one asked about ("Was that
+    van behind us the whole way?": :func:`not_told.asked_of`). A side said in the clause ("up on my
+    bumper on the inside") keeps the side."""
     out = []
     for link, mentions in clauses:
         if not mentions:
@@ -3035,6 +3037,8 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
             subject = _subject_before(before)
             if subject is None or any(set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[subject.end : j]):
                 continue
+            if asked_of(tokens, subject.start):
+                continue  # ("Was that van behind us the whole way?": a question asserts nothing)
             if subject.value == "pedestrian" or (stretch and subject.value in VULNERABLE):
                 continue
             if any(x.slot == "stationary" for x in before):

@@ -13,7 +13,10 @@ What keeps its reading: a verb said of the ego ("I moved out of my lane": the eg
 (who has no lane); a verb read as a move of its own (a stop, a turn, a crossing, a cut-out); "out of" a
 lane that is not the ego's ("out of the bike lane into my lane", "out of the left lane"); a move out
 made to overtake ("pulled out of my lane to overtake the lorry": the overtake is the move); a denied
-move ("did not move out of my lane").
+move ("did not move out of my lane"); and a move not told as done (:mod:`not_told`): a counterfactual
+("if the van ahead had moved out of my lane I would have been fine": it stayed), a question about the
+road user ("Did the van drift out of my lane?") and a passive ("was pulled out of my lane by the tow
+truck": it was moved).
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.not_told import asked_of, passive_at, undone
 from vei_scenario.language.settings import negated
 
 #: Moves a verb may already be read as that say only that it goes, or goes sideways with no direction:
@@ -79,10 +83,12 @@ def leaving_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             verbs = set(lemmas(verb).get("VERB", ()))
             if not verbs or verbs & _NOT_A_MOVE or negated(tokens, m.start):
                 continue
+            if undone(tokens, m.start) or passive_at(tokens, m.start):
+                continue  # ("if the van had moved out of my lane", "was pulled out of my lane by ...")
             if _out_of_the_ego_lane(tokens, m.end) is None:
                 continue
             subject = _subject_before(kept[:k])
-            if subject is None or subject.value == "pedestrian":
+            if subject is None or subject.value == "pedestrian" or asked_of(tokens, subject.start):
                 continue
             if any(x.slot == "behaviour" and x.value[0] == "overtake" for x in kept[k + 1 :]):
                 continue  # ("pulled out of my lane to overtake": the overtake is the move)

@@ -196,6 +196,11 @@ _ASKING = _WH | frozenset(
 )  # fmt: skip
 #: Words that open a sentence before its clause ("so", "and", "well", "ok"): the clause follows them.
 _OPENERS = frozenset(("so", "and", "but", "well", "ok", "okay", "now", "then", "right"))
+#: The auxiliaries and modals that open a yes/no question before its subject ("Was that van ...?",
+#: "Did the car ...?"): a wh-question ("Why was the van behind us?") takes what it asks about as given.
+YES_NO_OPENERS = _ASKING - _WH
+#: Words that open a sentence before its clause, public for :mod:`~vei_scenario.language.not_told`.
+OPENERS = _OPENERS
 #: The longest tag a statement asked back takes ("correct", "isn't it", "is that right").
 TAG_WORDS = 3
 
