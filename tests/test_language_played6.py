@@ -52,7 +52,9 @@ def test_a_cut_in_from_behind_in_the_ego_s_lane_comes_past_and_gets_in_ahead(lon
 
 def test_a_rider_cutting_in_from_behind_may_go_faster_than_its_kind_usually_does():
     layers = _cut_in_from("behind", -30.0, 13.0, "e-scooter")
-    assert top_speed(layers["adversaries"][0], 14.0) > 14.0 + cut_in.PASS_GAIN_MPS - 1e-6
+    ctx = _ctx(-2, 70.0)  # (where the writer places it: 30 m behind the ego in its lane)
+    ctx.actor_type, ctx.actor_speed_mps = "e-scooter", 13.0
+    assert top_speed(layers["adversaries"][0], 14.0, ctx) > 14.0 + cut_in.PASS_GAIN_MPS - 1e-6
 
 
 def _ctx(actor_lane: int, actor_s: float, lanes: int = 2) -> ActorContext:

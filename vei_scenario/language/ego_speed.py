@@ -21,7 +21,7 @@ from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.ego import SENTENCE_END
-from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
+from vei_scenario.language.function_words import ABOUT, FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.quantities import SPEED_HEADS, is_number
 
@@ -35,7 +35,7 @@ TRAFFIC = frozenset({"cars", "vehicles", "drivers", "motorists", "traffic"})
 _BETWEEN = frozenset(
     "are is were was usually typically normally generally often mostly still tend to be will all".split()
 )
-_HEDGES = frozenset({"about", "around", "roughly", "approximately", "at", "nearly", "some"})
+_HEDGES = ABOUT | {"at", "nearly", "some"}
 
 
 def at_the_limit(tokens: list[str]) -> list[str]:
@@ -455,7 +455,7 @@ CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smas
 #: ("braked but hit him"), which keeps the subject before it.
 _EGO_STRIKER = frozenset({"i", "we", "ego", "and", "but", ",", "then"})
 _ADVERBS = frozenset({"still", "then", "just", "eventually", "nevertheless", "finally", "only", "unfortunately"})
-_AT_HEDGES = frozenset({"at", "about", "around", "roughly", "approximately", "an", "a", "estimated", "maybe", "some"})
+_AT_HEDGES = ABOUT | {"at", "an", "a", "estimated", "maybe", "some"}
 
 
 #: Nouns of the moment two road users meet ("contact at 3 km/h", "impact at 20 mph"): a speed said "at" after one
@@ -528,7 +528,7 @@ _TOWARDS = frozenset({"into", "across", "of", "onto", "at", "towards", "toward",
 #: Prepositions that open a place phrase said between the ego and "at <speed>" ("into me on the M1 at 60").
 _PLACE = frozenset({"on", "along", "in", "down", "up", "through", "near", "past", "over"})
 #: Hedges before a bare speed ("about 30 km/h", "~40 mph").
-_NOTE_HEDGES = frozenset({"about", "around", "roughly", "approx", "approximately", "maybe", "nearly", "~", "c", "ca"})
+_NOTE_HEDGES = ABOUT | {"approx", "maybe", "nearly", "~", "c", "ca"}
 #: Marks that end a note ("..., 25 mph, ...", "... - 40 km/h - ...").
 _NOTE_MARKS = frozenset({",", "-", "–", "—", ";", ".", "!", "?", "(", ")"})
 

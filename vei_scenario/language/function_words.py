@@ -40,3 +40,15 @@ NO_ONE = frozenset(
     ("there", "here", "it", "that", "this", "what", "who", "where", "everyone", "everybody", "someone", "somebody",
      "nobody", "he", "she", "they", "one", "let", "how", "why", "when")
 )  # fmt: skip
+#: How the ego's lane is said after "out of", "into" and the like: its owner's words before "lane"
+#: ("my lane", "the ego's lane", "the ego lane").
+EGO_LANE_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "ego"))
+#: Verbs of saying that report what follows ("Mem said a lorry braked", "driver states rider was
+#: coming"); several are nouns as well ("states", "reports", "says"), so a tagger may miss them as verbs.
+SAYING = frozenset(
+    {"said", "says", "say", "states", "stated", "reckons", "reckoned", "told", "tells", "reports", "reported",
+     "claims", "claimed"}
+)  # fmt: skip
+#: The words that say a number is only roughly so ("about 40", "roughly 20 m"): every hedge of a
+#: number has them (normalise writes "approx.", "circa", "ca.", "est." and "~" before a digit as "about").
+ABOUT = frozenset({"about", "around", "roughly", "approximately"})

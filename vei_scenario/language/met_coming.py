@@ -11,9 +11,13 @@ has placed already.
 "A pickup coming the other way stopped and flashed us through", "the oncoming bus waited and waved
 me on": a road user said to come the other way that gives way to the ego does so where it is, in its
 own lane facing the ego: on a crossroad it waits on the arm opposite the ego's (the way it comes
-from), not on a side road it was never said to be in; elsewhere, with no side road to wait in, it
-stops in its lane, oncoming. Only a side said of it (from the side road on the left) puts it on a
-side arm instead.
+from), not on a side road it was never said to be in; where the map has no junction, it stops in its
+lane, oncoming. Only a side said of it (from the side road on the left) puts it on a side arm instead.
+Which map that is the reader has settled before: a vehicle that gives way makes it a crossroad even
+where no junction is said ("the oncoming bus waited and waved me on": the opposite arm), so it is on a
+bend ("on the bend the oncoming bus waited ...") or for a rider ("an oncoming cyclist waited ...")
+that it waits oncoming. ("A van coming the other way stopped and flashed me through" is read as a
+stop, no giving way, and stays oncoming on a straight road.)
 """
 
 from __future__ import annotations
@@ -56,8 +60,10 @@ def met_coming(tokens: list[str], named_end: int) -> bool:
 
 def waits_facing(said_towards: bool, first: str | None, rides: bool, side: str | None, junction: bool) -> str | None:
     """Where a road user said to come towards the ego (``said_towards``) that gives way first waits:
-    the opposite arm on a crossroad, its own lane elsewhere (oncoming); None where that is not so (on
-    foot, not giving way, or with a side of its own said)."""
+    the opposite arm on a crossroad or roundabout (``junction``), its own lane where the map has no
+    junction (oncoming); None where that is not so (on foot, not giving way, or with a side of its own
+    said). The map is the reader's: a vehicle giving way has made it a crossroad already, so it is a
+    rider, or a road user on a bend, that waits oncoming."""
     if not (said_towards and rides and first == "give_way") or side in ("left", "right"):
         return None
     return "junction_opposite" if junction else "oncoming"

@@ -47,7 +47,7 @@ from dataclasses import replace
 from vei_scenario.language.clauses import SENTENCE_END
 from vei_scenario.language.cut_back_in import sudden_returns_at_the_ego
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
-from vei_scenario.language.function_words import FIRST_PERSON, SUBJECT_PRONOUNS
+from vei_scenario.language.function_words import EGO_LANE_OWNERS, FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.not_told import asked_of
 from vei_scenario.language.own_way import REFLEXIVES, past_its_own_object
@@ -567,7 +567,7 @@ _PLACE_WORDS = OFF_ROAD_PLACES | {"space", "spot", "park"}
 
 #: Moves that, into the ego's lane, are a cut-in.
 _INTO_EGO_LANE_FROM = frozenset(("keep_going", "change_lane", "cut_out", "cross_in_front"))
-_EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "ego"))
+_EGO_OWNERS = EGO_LANE_OWNERS
 _STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "but", "then", "while", "when", "as"))
 
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from vei_scenario.language.function_words import EGO_LANE_OWNERS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.not_told import asked_of, passive_at, undone
 from vei_scenario.language.settings import negated
@@ -33,8 +34,7 @@ _SAYS_ONLY_THAT_IT_MOVES = frozenset(("keep_going", "along_road", "cut_in"))
 #: Adverbs and particles between a verb and "out of" ("moved slowly out of", "pulled right out of").
 _ON_THE_WAY_OUT = frozenset(("suddenly", "quickly", "slowly", "gradually", "right", "just", "fully", "partly",
                              "over", "across", "abruptly", "sharply", "then"))  # fmt: skip
-#: How the ego's lane is said after "out of" ("my lane", "the ego's lane", "the ego lane").
-_EGO_OWNERS = (("my",), ("our",), ("the", "ego", "'s"), ("ego", "'s"), ("the", "ego"))
+_EGO_OWNERS = EGO_LANE_OWNERS  # (after "out of": "my lane", "the ego's lane", "the ego lane")
 #: Prepositions after which the ego is an object, not the subject of the verb ("a car in front of me").
 _OBJECT_OF = frozenset(("of", "behind", "to", "past", "at", "with", "from", "than", "beside", "near", "ahead", "by"))
 #: Verbs of no motion, which "out of my lane" after them does not make a move ("was out of my lane").

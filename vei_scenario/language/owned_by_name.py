@@ -40,14 +40,12 @@ from vei_scenario.language.ego import (
     road_users,
     stands_parked,
 )
-from vei_scenario.language.function_words import CLAUSE_BREAKS, NO_ONE, PHRASE_ENDS, WORDS_OF_TIME
+from vei_scenario.language.function_words import CLAUSE_BREAKS, NO_ONE, PHRASE_ENDS, SAYING, WORDS_OF_TIME
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.protagonist import verb_of_reacting
 
 #: Verbs of saying after the owner named again ("Mem said", "Bea reckons"): what follows is what happened.
-REPORTING = frozenset(
-    {"said", "says", "say", "states", "stated", "reckons", "reckoned", "told", "tells", "reports", "reported"}
-)
+REPORTING = SAYING
 
 
 def _named_owner(tokens: list[str], p, kind_at: KindAt) -> int | None:

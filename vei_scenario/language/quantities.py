@@ -26,6 +26,7 @@ from dataclasses import replace
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.clauses import sentence_start
+from vei_scenario.language.function_words import ABOUT
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.sides import KERB_NOUNS
 
@@ -115,7 +116,7 @@ def before_hedge(tokens: list[str], i: int) -> str:
 #: straight 40", "driving slow 20"), and the words that strengthen them ("very slowly", "quite carefully").
 _MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really"})
 #: Words of a guess right before a number ("with about 60", "slowly, maybe 20").
-_HEDGE_WORDS = frozenset({"about", "around", "roughly", "approximately", "approx", "maybe", "like", "~", "some"})
+_HEDGE_WORDS = ABOUT | {"approx", "maybe", "like", "~", "some"}
 
 
 def _manner(word: str) -> bool:
@@ -965,6 +966,8 @@ def _subject_is_lateral(tokens: list[str], i: int) -> bool:
 
 #: Words that hedge or bound a number and say nothing else ("about", "approx.", "~", "just under"): a
 #: number after a noun past them is said of the noun as one right after it is ("cyclist approx. 15 km/h").
+#: (normalise writes "approx.", "circa", "ca." and "est." before a digit as "about"; "ca" without its dot
+#: is still read here, "Truck ca 80 km/h", and "circa" and "est" before another hedge, "circa ~80 km/h".)
 _HEDGES = (_HEDGE_WORDS | APPROXIMATORS | {"ca", "circa", "est", "estimated"}) - {"some"}
 
 

@@ -93,21 +93,19 @@ def friction(layers: dict) -> float:
     return float(w.get("friction", WEATHER[w["condition"]][3]))
 
 
-def top_speed(adv: dict, ego_speed: float) -> float:
-    """The top speed (m/s) of adversary ``adv``'s vehicle: its kind's usual one, or more where its
-    layers ask more of it: the speed they give it (a rider the text has doing 30 mph rides a tuned
-    scooter), and an overtake's pass, which must outrun the ego (at its kind's usual top a rider
-    never gets past an ego as fast as that), as a cut-in's from behind the ego does."""
+def top_speed(adv: dict, ego_speed: float, ctx: ActorContext) -> float:
+    """The top speed (m/s) of adversary ``adv``'s vehicle, placed as ``ctx`` says: its kind's usual
+    one, or more where its layers ask more of it: the speed they give it (a rider the text has doing
+    30 mph rides a tuned scooter), and an overtake's pass, which must outrun the ego (at its kind's
+    usual top a rider never gets past an ego as fast as that), as a cut-in's that comes past the ego
+    first does (:func:`cut_in.comes_past_first`, the test its compile makes, on where it stands)."""
     top = max(TYPES[adv["type"]][3], float(adv.get("speed_mps", 0.0)))
     for _, node in behaviour_nodes(adv["behaviour"]):
         if node["behaviour"] == "overtake":
             gain = value(node.get("config", {}), behaviour("overtake").PARAMETERS, "speed_gain_mps")
             top = max(top, ego_speed + gain)
-        if node["behaviour"] == "cut_in" and adv["spawn"].get("relation") == "behind":
-            # (from behind the ego in its lane it comes past first: cut_in.from_behind)
-            behind_m = max(0.0, -float(adv["spawn"].get("longitudinal_m", 0.0)))
-            pace = cut_in.pass_speed(ego_speed, float(adv.get("speed_mps", 0.0)), behind_m, node.get("config", {}))
-            top = max(top, pace)
+        if node["behaviour"] == "cut_in" and cut_in.comes_past_first(ctx):
+            top = max(top, cut_in.pass_speed_of(ctx, node.get("config", {})))
     return round(top, 3)
 
 
@@ -353,7 +351,6 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         name, kind = adv["name"], adv["type"]
         pose = placement.adversary_pose(info, ego_pose, adv["spawn"])
         speed = float(adv.get("speed_mps", 0.0 if vulnerable(kind) else ego_speed))
-        top = top_speed(adv, ego_speed)
         ctx = ActorContext(
             actor=name,
             actor_type=kind,
@@ -370,7 +367,6 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             exits=info.exits,
             junction_end_s_m=info.feature_s_m,
             actor_max_accel_mps2=TYPES[kind][4],
-            actor_max_speed_mps=top,
             ego_s_m=ego_pose.s,
             actor_length_m=TYPES[kind][0][0],
             actor_exits=_own_exits(info, pose.road),
@@ -419,6 +415,8 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
             position = xosc.WorldPosition(round(x, 3), round(y, 3), 0, round(heading, 5))
         else:
             position = _lane_position(pose)
+        # (where it starts is settled: a rider at the kerb edge is in the lane it swerves from)
+        top = ctx.actor_max_speed_mps = top_speed(adv, ego_speed, ctx)
         if controller is not None:
             entities.add_scenario_object(name, _vehicle(name, kind, mu, top), controller)
         else:

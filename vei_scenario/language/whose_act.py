@@ -45,6 +45,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from vei_scenario.language.function_words import SAYING
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.lexicon import MOTOR_TWO_WHEELERS
 
@@ -564,8 +565,8 @@ def _after_a_verb(tokens: list[str], i: int) -> bool:
     return ("VERB" in pos and not pos.keys() & {"ADJ", "NOUN"}) or prev in _SAYS
 
 
-#: Verbs of telling, which are nouns as well ("states", "reports", "says").
-_SAYS = frozenset(("states", "stated", "says", "said", "reports", "reported", "claims", "claimed"))
+#: Verbs of telling, several of them nouns as well ("states", "reports", "says").
+_SAYS = SAYING
 
 
 def _rides_nothing_said(tokens: list[str], i: int) -> bool:

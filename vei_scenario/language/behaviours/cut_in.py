@@ -106,7 +106,7 @@ def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     )
     rate = ctx.max_decel(value(cfg, PARAMETERS, "brake_rate_mps2"))
     actions = [lane_change_to_ego(ctx.ego, duration), speed_action(after, rate=rate)]
-    if behind_in_ego_lane(ctx):
+    if comes_past_first(ctx):
         return from_behind(ctx, cfg, actions)
     # if the gap never comes (the ego slows for something else), it cuts in when it planned to anyway
     late = float(cfg.get("lead_s", 2.5)) + LATE_S
@@ -133,6 +133,14 @@ def behind_in_ego_lane(ctx: ActorContext) -> bool:
     return (ctx.ego_s_m - ctx.actor_s_m) * forward > 0.0
 
 
+def comes_past_first(ctx: ActorContext) -> bool:
+    """Whether the actor's cut-in comes past the ego first (:func:`from_behind`): it moves, behind the
+    ego in the ego's own lane (:func:`behind_in_ego_lane`), and does not pull out across the oncoming
+    lanes. Why one predicate: the writer raises the vehicle's top speed to :func:`pass_speed_of` where
+    this holds and nowhere else, so the pass compiled is the one its vehicle can drive."""
+    return not ctx.pulls_out_across and ctx.actor_speed_mps >= STANDING_MPS and behind_in_ego_lane(ctx)
+
+
 def passing_lane(ctx: ActorContext) -> int:
     """The lane beside the ego's that one coming past it uses: the next one of the ego's direction to
     its left, else (the ego in the lane by the centre line) the one to its right, else (one lane each
@@ -153,6 +161,12 @@ def pass_speed(ego_speed: float, speed: float, behind_m: float, cfg: dict) -> fl
     return max(max(ego_speed, speed) + PASS_GAIN_MPS, ego_speed + (behind_m + gap) / PASS_S)
 
 
+def pass_speed_of(ctx: ActorContext, cfg: dict) -> float:
+    """The speed (m/s) the actor of ``ctx`` comes past the ego at (:func:`pass_speed`), from where it
+    starts behind the ego."""
+    return pass_speed(ctx.ego_speed_mps, ctx.actor_speed_mps, abs(ctx.ego_s_m - ctx.actor_s_m), cfg)
+
+
 def from_behind(ctx: ActorContext, cfg: dict, cut: list) -> list[Step]:
     """Out into :func:`passing_lane`, past the ego faster than it (by enough to be ``gap_m`` ahead
     about :data:`PASS_S` after the start, and at least :data:`PASS_GAIN_MPS`), and in with ``cut``
@@ -160,8 +174,7 @@ def from_behind(ctx: ActorContext, cfg: dict, cut: list) -> list[Step]:
     the distance condition has no sign, and ``gap_m`` behind would trigger it before the pass."""
     duration = value(cfg, PARAMETERS, "lane_change_s")
     gap = value(cfg, PARAMETERS, "gap_m")
-    wanted = pass_speed(ctx.ego_speed_mps, ctx.actor_speed_mps, abs(ctx.ego_s_m - ctx.actor_s_m), cfg)
-    fast, accel = ctx.reachable(wanted, PASS_ACCEL_MPS2)
+    fast, accel = ctx.reachable(pass_speed_of(ctx, cfg), PASS_ACCEL_MPS2)
     out = [lane_change_to(passing_lane(ctx), duration), speed_action(fast, rate=accel)]
     return [
         Step("pull_out", out, hold_s=0.0),
