@@ -152,18 +152,38 @@ def _referents(tokens: list[str], phrases) -> dict[str, list]:
     return out
 
 
+def owner_before(tokens: list[str], p) -> str | None:
+    """The word before the "'s" that owns the bare vehicle phrase ``p`` ("Mary" in "Mary's car", "Mary's
+    grey car"), else None."""
+    if p.det:
+        return None
+    s = p.start - 1
+    while s >= p.start - 3 and s > 0 and tokens[s].isalpha() and tokens[s] not in DEFINITE | INDEFINITE:
+        s -= 1
+    return tokens[s - 1] if s >= 1 and tokens[s] == "'s" else None
+
+
 def as_ego(
-    tokens: list[str], kind_at: KindAt, known: Known, noun: str, dropped: list[str], only: bool = False
+    tokens: list[str],
+    kind_at: KindAt,
+    known: Known,
+    noun: str,
+    dropped: list[str],
+    only: bool = False,
+    owner: frozenset[str] | None = None,
 ) -> list[str]:
     """``tokens`` with every definite or bare mention of the vehicle named by ``noun`` (its head) said
     "the ego", as is "the driver of" it, and where it is the ``only`` vehicle, "the driver"; an
-    indefinite one ("another bus") is someone else."""
+    indefinite one ("another bus") is someone else, and so, where the ego's ``owner`` words are given,
+    is one another owner's "'s" names ("Mary's car" where the ego is John's)."""
     out = list(tokens)
     for p in reversed(_vehicle_phrases(out, kind_at, known)):
         driver = only and _at_wheel(out, p) and out[p.end : p.end + 1] != ["of"]
         new = p.det in INDEFINITE and not (only and p.det in ("a", "an"))
         if (out[p.end - 1] != noun and not driver) or new or "other" in out[p.start : p.head]:
             continue
+        if owner is not None and owner_before(out, p) not in owner | {None, "ego"}:
+            continue  # ("John's car and Mary's car collided": Mary's is another car)
         start = p.start
         back = next((b for b in range(start - 1, max(start - 3, -1), -1) if out[b] in DEFINITE | INDEFINITE), None)
         if not p.det and back is not None and all(out[b].isalpha() for b in range(back, start)):
@@ -1412,7 +1432,8 @@ def _owned_vehicle(tokens: list[str], kind_at: KindAt, known: Known, dropped: li
         owner = tokens[start : p.start - 1]
         noun = tokens[p.end - 1]
         dropped.extend(w for w in tokens[start : p.end] if w.isalpha() and w not in PARTY_OWNERS)
-        out = as_ego([*tokens[:start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+        out = [*tokens[:start], "the", "ego", *tokens[p.end :]]
+        out = as_ego(out, kind_at, known, noun, dropped, owner=frozenset(owner))  # (not "Mr Tan's car")
         i = start + 2
         while i < len(out):  # (the owner named again: "Our son was going straight on")
             if out[i : i + len(owner)] == owner:

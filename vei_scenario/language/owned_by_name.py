@@ -1,12 +1,12 @@
-"""The vehicle a story is told about, named by its owner's name: "Lena's Mini", "Mem's Octavia", "the
+"""The vehicle a story is told about, named by its owner's name: "Lena's car", "Mem's Octavia", "the
 survey team's van".
 
 A mechanic's job sheet, a script, a council's minutes or a patrol log often follow one person who is
 not the writer, and name that person's vehicle once, by its owner, before the story: "Mem's Octavia,
-rear tyre. Mem said a lad on an e-scooter came off the kerb and he had to swerve", "Lena's Mini in the
-outside lane. In her mirror, a white van right up on her bumper". The story is told from that
-vehicle: it is the ego, and listing it as a road user of its own would give the scenario a road user
-too many and leave the ego's speed ("he was doing 35") unsaid.
+rear tyre. Mem said a lad on an e-scooter came off the kerb and he had to swerve", "Lena's car in the
+outside lane. In her mirror, a white van was tailgating her" (the lane it is in places it by no one).
+The story is told from that vehicle: it is the ego, and listing it as a road user of its own would give
+the scenario a road user too many and leave the ego's speed ("he was doing 35") unsaid.
 
 :func:`frame` reads it where no earlier rule named the ego (see :mod:`ego` and :mod:`protagonist`)
 and no narrator is in the story (no "I", "we", "me", "us": "I was behind Priya's Fiesta" is someone
@@ -16,7 +16,10 @@ first. Its owner is one or two plain words before "'s" that name no road user, n
 bus") and no one at all ("there's a car"), and no determiner but "the" opens them ("a neighbour's
 car" is someone besides the one followed). The owner named again, its pronouns (where the first he
 or she after it can be no one else) and a bare "the driver" who reacts ("the driver had to brake")
-are the ego too.
+are the ego too; another owner's vehicle ("John's car and Mary's car collided") is someone else. A
+vehicle that acts on the road user named next in its clause, with an owner the story does not go on
+with (never named again, no "he" or "she": a shop's, company's or brand's, "McDonald's lorry pulled
+out in front of a cyclist") is told from outside, as one met.
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from vei_scenario.language.ego import (
     NARRATOR_INVOLVED,
     NARRATOR_PERSON,
     PRONOUNS,
+    PUNCT,
     VEHICLES,
     KindAt,
     Known,
@@ -50,7 +54,7 @@ REPORTING = SAYING
 
 def _named_owner(tokens: list[str], p, kind_at: KindAt) -> int | None:
     """Where the owner's words start, for a vehicle named by its owner's name or by a noun of a
-    person or group that is no road user: "Lena's Mini", "Mem's Octavia", "the audit team's car"
+    person or group that is no road user: "Lena's car", "Mem's Octavia", "the audit team's car"
     (one or two plain words, after an optional "the"); None for a road user's ("the cyclist's
     bike"), a time's ("Friday's bus") or a word that names no one ("there's a car")."""
     if p.det:
@@ -80,6 +84,25 @@ def _named_owner(tokens: list[str], p, kind_at: KindAt) -> int | None:
     return start
 
 
+def _acts_on_another(tokens: list[str], p, other) -> bool:
+    """Whether the owned vehicle ``p`` does something to the road user ``other`` named next in its own
+    clause ("McDonald's lorry pulled out in front of a cyclist", "Tesco's lorry cut up a cyclist"): a
+    verb right after it (not "was": "was hit by a van", "was behind a bus"), and the other no agent
+    of it ("by a van") and not joined to it ("John's car and a van collided")."""
+    between = tokens[p.end : other.start]
+    if not between or between[0] in BE or "VERB" not in lemmas(between[0]):
+        return False
+    return not set(between) & (CLAUSE_BREAKS | PUNCT | {"by"})
+
+
+def _followed(tokens: list[str], p, owner: list[str]) -> bool:
+    """Whether the owner of ``p`` is someone the story goes on with: named again ("Mem said") or a
+    person's pronoun after it ("she braked"). A shop's, company's or brand's is neither."""
+    rest = tokens[p.end :]
+    again = any(rest[i : i + len(owner)] == owner for i in range(len(rest)))
+    return again or bool({"he", "she", "him", "his", "her"} & set(rest))
+
+
 def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """``tokens`` with the vehicle named first, by its owner's name (see :func:`_named_owner`), said
     "the ego", with its owner, their pronouns and a bare driver who reacts (see the module's
@@ -98,9 +121,12 @@ def frame(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) 
     if start is None:
         return tokens
     owner = [w for w in tokens[start : tokens.index("'s", start)] if w != "the"]
+    if _acts_on_another(tokens, p, users[1]) and not _followed(tokens, p, owner):
+        return tokens  # ("McDonald's lorry pulled out in front of a cyclist": told from outside)
     noun = tokens[p.end - 1]
     dropped.extend(w for w in tokens[start : p.end] if w.isalpha() and w != "the")
-    out = as_ego([*tokens[:start], "the", "ego", *tokens[p.end :]], kind_at, known, noun, dropped)
+    out = [*tokens[:start], "the", "ego", *tokens[p.end :]]
+    out = as_ego(out, kind_at, known, noun, dropped, owner=frozenset(owner))  # (not "Mary's car")
     i = start + 2
     while i < len(out):  # (the owner named again: "Mem said ...")
         if out[i : i + len(owner)] == owner and out[i + len(owner) : i + len(owner) + 1] != ["'s"]:
