@@ -83,7 +83,7 @@ LOANWORDS = {
         "osobowka", "araba", "osobni auto", "moto", "motos", "motocicleta", "motocyclette", "motorrad",
         "motorino", "motocykl", "motosiklet", "motorfiets", "bromfiets", "brommer", "scooterino", "mofa",
         "mobylette", "ciclomotor", "ciclomotore", "motociclista", "motocycliste", "motard", "motorradfahrer",
-        "motocyklista", "motorrijder", "xe may", "xe hoi", "xe o to",
+        "motocyklista", "motorrijder", "xe may", "xe hoi",
     ),
 }  # fmt: skip
 
