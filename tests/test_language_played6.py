@@ -20,6 +20,7 @@ from play_layers import play_layers
 from vei_scenario.language.behaviours import cross_in_front, cut_in
 from vei_scenario.language.behaviours.base import ActorContext
 from vei_scenario.language.corpus_check import _ego_frame, played_problems
+from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.rules_backend import layers_from_text
 from vei_scenario.language.scenario_writer import top_speed
 
@@ -164,3 +165,16 @@ def test_guard_a_kerb_crosser_still_sets_off_by_the_ego_s_distance_first():
     standing = _ctx(-2, 140.0)
     standing.ego_speed_mps = 0.0
     assert cross_in_front.late_s(standing, trigger_m) is None
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_cut_in_after_an_overtake_cuts_in_from_beside_not_from_behind_again(seed, tmp_path):
+    """An overtake then a cut-in: the cut-in starts where the overtake left the road user, already
+    past the ego, so it does not pull out to come past a second time (on a road with one lane each way
+    that second pass ran into the junction's unlinked lanes)."""
+    layers = layers_from_text(
+        "Nearing the roundabout, a pickup behind me overtook me and cut in sharply just in front of me.", seed
+    )
+    [adv] = layers["adversaries"]
+    assert [node["behaviour"] for _, node in behaviour_nodes(adv["behaviour"])] == ["overtake", "cut_in"]
+    assert played_problems(play_layers(layers, tmp_path), layers) == []

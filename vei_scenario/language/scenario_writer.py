@@ -100,11 +100,11 @@ def top_speed(adv: dict, ego_speed: float, ctx: ActorContext) -> float:
     usual top a rider never gets past an ego as fast as that), as a cut-in's that comes past the ego
     first does (:func:`cut_in.comes_past_first`, the test its compile makes, on where it stands)."""
     top = max(TYPES[adv["type"]][3], float(adv.get("speed_mps", 0.0)))
-    for _, node in behaviour_nodes(adv["behaviour"]):
+    for n, (_, node) in enumerate(behaviour_nodes(adv["behaviour"])):
         if node["behaviour"] == "overtake":
             gain = value(node.get("config", {}), behaviour("overtake").PARAMETERS, "speed_gain_mps")
             top = max(top, ego_speed + gain)
-        if node["behaviour"] == "cut_in" and cut_in.comes_past_first(ctx):
+        if node["behaviour"] == "cut_in" and n == 0 and cut_in.comes_past_first(ctx):
             top = max(top, cut_in.pass_speed_of(ctx, node.get("config", {})))
     return round(top, 3)
 
@@ -218,6 +218,7 @@ class _StoryBuilder:
         mod = behaviour(node["behaviour"])
         cfg = dict(node.get("config", {}))
         steps = mod.compile(self.ctx, cfg)
+        self.ctx.acted = True
         activates = [a for st in steps for a in st.actions if isinstance(a, xosc.ActivateControllerAction)]
         if self.controlled and steps and not activates:
             # what follows a ride the social force model steered (a stop after crossing) is the

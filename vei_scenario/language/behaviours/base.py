@@ -102,6 +102,9 @@ class ActorContext:
     actor_offset_m: float = 0.0
     #: An earlier behaviour of the actor has given it a route through the junction (a turn there).
     routed: bool = False
+    #: Set once a behaviour of the actor is compiled: what follows it starts where that one left the
+    #: actor (a cut-in after an overtake is already past the ego), not where it spawned
+    acted: bool = False
     #: The ego's way through its junction (straight, left, right): what a road user must cross to meet it.
     ego_route: str = "straight"
 

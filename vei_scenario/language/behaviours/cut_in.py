@@ -137,8 +137,11 @@ def comes_past_first(ctx: ActorContext) -> bool:
     """Whether the actor's cut-in comes past the ego first (:func:`from_behind`): it moves, behind the
     ego in the ego's own lane (:func:`behind_in_ego_lane`), and does not pull out across the oncoming
     lanes. Why one predicate: the writer raises the vehicle's top speed to :func:`pass_speed_of` where
-    this holds and nowhere else, so the pass compiled is the one its vehicle can drive."""
-    return not ctx.pulls_out_across and ctx.actor_speed_mps >= STANDING_MPS and behind_in_ego_lane(ctx)
+    this holds and nowhere else, so the pass compiled is the one its vehicle can drive. Only as the
+    actor's first act: after an overtake it is already past the ego, and cuts in from beside it."""
+    return (
+        not ctx.acted and not ctx.pulls_out_across and ctx.actor_speed_mps >= STANDING_MPS and behind_in_ego_lane(ctx)
+    )
 
 
 def passing_lane(ctx: ActorContext) -> int:
