@@ -89,6 +89,8 @@ FIRST = {
     "language_independent_z36.json": ((50, 50, 17, 48), "sealed for a round of reader work"),
     "language_independent_z37.json": ((50, 49, 11, 44), "sealed for a round of reader work"),
     "language_independent_z38.json": ((50, 50, 3, 47), "sealed for a round of reader work"),
+    "language_independent_z39.json": ((50, 50, 11, 49), "sealed for a round of reader work"),
+    "language_independent_z40.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
 }
 
 
