@@ -1257,7 +1257,7 @@ def out_of_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             lane = _lane_after(tokens, j + 1)
             if lane is None or lane[1] or _before_the_ego(tokens, lane[0]):
                 continue  # (no lane, or the ego's: "into my lane", "into the next lane in front of me")
-            subject = _subject_before(kept[:k])
+            subject = subject_before(kept[:k])
             if subject is None or subject.value == "pedestrian":
                 continue  # (a walker has no lane to change: its move across is a crossing)
             at = kept.index(subject)
@@ -1306,7 +1306,7 @@ def into_another_lane(clauses: list, tokens: list[str]) -> list:
             if at is not None:
                 continue
             before = [x for x in kept if x.start < j]
-            subject = _subject_before(before)
+            subject = subject_before(before)
             if subject is None or any(x.slot == "behaviour" and x.start > subject.start for x in before):
                 continue  # (no road user, or one whose verb is read already)
             said = _verb_into_a_lane(tokens, j, ego_lanes)
@@ -1802,7 +1802,7 @@ def follows_with_nothing_named(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(mentions):
             if m.slot != "relation" or not _a_following(m) or (m.start and tokens[m.start - 1] in _BEFORE_AN_ADJECTIVE):
                 continue
-            subject = _subject_before(mentions[:k])
+            subject = subject_before(mentions[:k])
             if subject is None or _has_object(tokens, m.end):
                 continue
             after_subject = mentions[mentions.index(subject) + 1 :]
@@ -2577,11 +2577,11 @@ _OWNER_OPENS = frozenset(("a", "an", "the", "this", "that", "his", "her", "their
 
 def _who_passes(before: list, said: list):
     """The road user a verb after ``before`` (its clause's mentions before it) is said of, as
-    :func:`_subject_before`, with a walker's or rider's pronoun ("he", "she", "they") read as the last
+    :func:`subject_before`, with a walker's or rider's pronoun ("he", "she", "they") read as the last
     road user named before it in the text (``said``: all its mentions): a narrator's next sentence
     goes on with "he passed in front ...". A road user right after a relation is its object, not the
     subject ("a cyclist came out from behind a parked lorry and passed ...": the cyclist passed)."""
-    subject = _subject_before(before)
+    subject = subject_before(before)
     if subject is not None and subject.slot == "actor":
         k = before.index(subject) - 1
         while k >= 0 and before[k].slot == "stationary":
@@ -2660,7 +2660,7 @@ def _said_from_behind(clauses: list, tokens: list[str]) -> list:
         for k, m in enumerate(mentions):
             if m.slot != "relation" or m.value != "behind":
                 continue
-            subject = _subject_before(mentions[:k])
+            subject = subject_before(mentions[:k])
             if subject is None or subject.slot != "actor":
                 continue
             said = tokens[m.end : m.end + 2]
@@ -2688,7 +2688,7 @@ def _past_the_front(before: list, clauses: list) -> str:
     """What a road user that went past the ego's front (its clause's mentions ``before`` the verb) did:
     crossed the ego's path; a vehicle, where no junction is said in ``clauses``, has no arm to cross
     from and cut across in front of the ego, as one that "cut across our bonnet" does."""
-    subject = _subject_before(before)
+    subject = subject_before(before)
     junction = any(x.slot == "map" and x.value in _THROUGH_A_JUNCTION for _, xs in clauses for x in xs)
     return "cut_in" if subject is not None and subject.value in VEHICLES and not junction else "cross_in_front"
 
@@ -2802,7 +2802,7 @@ def _enters_the_ego_way(tokens: list[str], j: int, subject_start: int) -> int | 
 _OBJECT_OF = frozenset(("of", "behind", "to", "past", "at", "with", "from", "than", "beside", "near", "ahead", "by"))
 
 
-def _subject_before(before: list):
+def subject_before(before: list):
     """The road user a verb after ``before`` (the clause's mentions before it) is said of: the last
     one named, past the ego named as the object of a preposition ("a car in front of me"); None
     where that is the ego itself."""
@@ -2846,7 +2846,7 @@ def entering_the_ego_lane(clauses: list, tokens: list[str]) -> list:
             if negated(tokens, j if at is None else at.start):
                 continue  # ("the rider does not enter the vehicle's lane": it stays where it is)
             before = [x for x in kept if x.start < j]
-            subject = _subject_before(before)
+            subject = subject_before(before)
             if subject is None:
                 continue
             end = _enters_the_ego_way(tokens, j, subject.start)
@@ -3034,7 +3034,7 @@ def on_the_ego_tail(clauses: list, tokens: list[str]) -> list:
             if end is None:
                 continue
             before = [x for x in kept if x.start < j]
-            subject = _subject_before(before)
+            subject = subject_before(before)
             if subject is None or any(set(lemmas(t).get("VERB", ())) & _TOUCH for t in tokens[subject.end : j]):
                 continue
             if asked_of(tokens, subject.start):
@@ -3085,7 +3085,7 @@ def at_a_time_gap_behind(clauses: list) -> list:
     for link, mentions in clauses:
         gap = next((x for x in mentions if _a_time_gap(x)), None)
         behind = next((x for x in mentions if x.slot == "relation" and x.value == "behind"), None)
-        subject = _subject_before([x for x in mentions if gap is not None and x.start < gap.start])
+        subject = subject_before([x for x in mentions if gap is not None and x.start < gap.start])
         acts = [x for x in mentions if x.slot == "behaviour"]
         if gap is None or behind is None or subject is None or subject.start > behind.start:
             out.append((link, mentions))
@@ -3179,7 +3179,7 @@ def in_in_front_of_the_ego(clauses: list, tokens: list[str]) -> list:
         plain = m.slot == "unknown_verb" or (m.slot == "behaviour" and m.value[0] in _PLAIN_MOVES)
         if not plain or not _in_before_the_ego(tokens, m.end):
             return None
-        if _subject_before(mentions[:k]) is None:
+        if subject_before(mentions[:k]) is None:
             return None
         return replace(m, slot="behaviour", value=("cut_in", {}))
 
@@ -3254,7 +3254,7 @@ def into_the_lane_the_ego_is_in(clauses: list, tokens: list[str]) -> list:
                 continue
             lane = "lane" in tokens[nxt.start : nxt.end] or "lanes" in tokens[nxt.start : nxt.end]
             into = m.words.split()[-1] in ("into", "onto", "the") or tokens[m.end : m.end + 1] in (["into"], ["onto"])
-            if not (lane and into) or _subject_before(kept[:k]) is None:
+            if not (lane and into) or subject_before(kept[:k]) is None:
                 continue
             ours = nxt.value in ego_lanes
             if ours and _well_clear(kept):

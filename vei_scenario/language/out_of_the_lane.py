@@ -25,6 +25,7 @@ from dataclasses import replace
 
 from vei_scenario.language.function_words import EGO_LANE_OWNERS
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.motion import subject_before
 from vei_scenario.language.not_told import asked_of, passive_at, undone
 from vei_scenario.language.settings import negated
 
@@ -35,8 +36,6 @@ _SAYS_ONLY_THAT_IT_MOVES = frozenset(("keep_going", "along_road", "cut_in"))
 _ON_THE_WAY_OUT = frozenset(("suddenly", "quickly", "slowly", "gradually", "right", "just", "fully", "partly",
                              "over", "across", "abruptly", "sharply", "then"))  # fmt: skip
 _EGO_OWNERS = EGO_LANE_OWNERS  # (after "out of": "my lane", "the ego's lane", "the ego lane")
-#: Prepositions after which the ego is an object, not the subject of the verb ("a car in front of me").
-_OBJECT_OF = frozenset(("of", "behind", "to", "past", "at", "with", "from", "than", "beside", "near", "ahead", "by"))
 #: Verbs of no motion, which "out of my lane" after them does not make a move ("was out of my lane").
 _NOT_A_MOVE = frozenset(("be", "have", "do", "stay", "keep", "remain"))
 
@@ -58,18 +57,6 @@ def _out_of_the_ego_lane(tokens: list[str], j: int) -> int | None:
     return None
 
 
-def _subject_before(before: list):
-    """The road user a verb after ``before`` is said of: the last named, past the ego as the object of a
-    preposition ("the van ahead of me"); None where that is the ego itself."""
-    for x in reversed(before):
-        if x.slot not in ("actor", "pronoun"):
-            continue
-        if x.value == "ego" and x.prev in _OBJECT_OF:
-            continue
-        return None if x.value == "ego" else x
-    return None
-
-
 def leaving_the_ego_lane(clauses: list, tokens: list[str]) -> list:
     """``clauses`` with a road user's verb of going followed by "out of" + the ego's lane read as a lane
     change (see the module's docstring); ``tokens`` are the reader's tokens the mentions index."""
@@ -87,7 +74,7 @@ def leaving_the_ego_lane(clauses: list, tokens: list[str]) -> list:
                 continue  # ("if the van had moved out of my lane", "was pulled out of my lane by ...")
             if _out_of_the_ego_lane(tokens, m.end) is None:
                 continue
-            subject = _subject_before(kept[:k])
+            subject = subject_before(kept[:k])
             if subject is None or subject.value == "pedestrian" or asked_of(tokens, subject.start):
                 continue
             if any(x.slot == "behaviour" and x.value[0] == "overtake" for x in kept[k + 1 :]):
