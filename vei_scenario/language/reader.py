@@ -600,10 +600,21 @@ def _actor_at(tokens: list[str], i: int) -> bool:
 
 def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
     """The longest phrase at ``i``; of equally long ones the one written as the text has it."""
-    keys = list(_match(tokens, i))
+    return _best_in(tuple(tokens[i : i + _LONGEST_KEY]))
+
+
+#: The most words a table phrase has: what follows them cannot change the phrase found at a word.
+_LONGEST_KEY = max(map(len, TABLE))
+
+
+@lru_cache(maxsize=1 << 16)
+def _best_in(window: tuple[str, ...]) -> tuple[str, ...] | None:
+    """:func:`_best` at the start of ``window``, the words from there that a phrase can span. Why a
+    cache: the rules ask what phrase stands at a word thousands of times a text, at the same words."""
+    keys = list(_match(window, 0))
     if not keys:
         return None
-    return max(keys, key=lambda k: (len(k), k == tuple(tokens[i : i + len(k)]), k))
+    return max(keys, key=lambda k: (len(k), k == window[: len(k)], k))
 
 
 _DETERMINERS = {"the", "a", "an", "its", "our", "my", "their", "his", "her", "this", "that", "another", "some"}

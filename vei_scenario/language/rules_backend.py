@@ -10,8 +10,10 @@ Words it cannot place are reported (:class:`~vei_scenario.language.reading.NotUn
 
 from __future__ import annotations
 
+import copy
 import math
 import random
+from functools import lru_cache
 
 from vei_scenario.language import closest_approach, lane_room
 from vei_scenario.language.behaviours import BEHAVIOURS
@@ -1227,5 +1229,12 @@ MIN_BACKGROUND_SPEED_MPS = 5.0
 
 
 def layers_from_text(text: str, seed: int) -> dict:
-    """Parse and sample: the layers of scenario ``seed`` of ``text``."""
-    return sample_layers(read(text), text, seed)
+    """Parse and sample: the layers of scenario ``seed`` of ``text``. The reading is kept for the next
+    seeds of the same text (a checker samples each description several times; reading is the slow
+    part and depends on the text alone); each sample gets its own copy of it."""
+    return sample_layers(copy.deepcopy(_kept_reading(text)), text, seed)
+
+
+@lru_cache(maxsize=64)
+def _kept_reading(text: str) -> Reading:
+    return read(text)
