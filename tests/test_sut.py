@@ -170,14 +170,15 @@ def test_falsify_finds_the_late_aebs_failures_and_its_reproduce_command_reproduc
 
 
 def test_falsify_finds_every_failure_window_of_a_dense_grid_with_a_tenth_of_its_runs(scenario):
-    """The late AEB, interpreted: a grid at 0.01 s over TimeShift -1..5 (601 runs) against the search at
-    the same resolution (--tol 0.01): every window of ego-moving collisions the grid finds is a region
-    of the search, its edges on the same lattice point or the next, in at most 10 % of the grid's runs."""
+    """The late AEB, interpreted: a grid at 0.01 s over TimeShift 1..5 (401 runs; a grid over -1..5 finds
+    no ego-moving collision below 1 s) against the search at the same resolution (--tol
+    0.01): every window of ego-moving collisions the grid finds is a region of the search, its edges on
+    the same lattice point or the next, in at most 10 % of the grid's runs."""
     from vei_scenario.falsify import Axis, falsify
     from vei_scenario.sweep.evaluate import evaluate_local
 
     controllers = tuple(parse_controller_options([f"Ego={DATA}/aeb_flawed.py:LateAEB"]))
-    grid = [{"RiderType": "aggressive", "TimeShift": repr(round(-1 + 0.01 * i, 2))} for i in range(601)]
+    grid = [{"RiderType": "aggressive", "TimeShift": repr(round(1 + 0.01 * i, 2))} for i in range(401)]
     rows = evaluate_local(str(scenario), grid, 0.01, controllers=controllers)
     moving = [float(v["TimeShift"]) for v, r in zip(grid, rows) if r["metrics"]["collision_ego_moving"]]
     windows, start = [], None
@@ -187,7 +188,7 @@ def test_falsify_finds_every_failure_window_of_a_dense_grid_with_a_tenth_of_its_
             windows.append((start, a))
             start = None
     assert windows  # (the grid sees the late AEB fail)
-    result = falsify(scenario, [Axis("TimeShift", -1, 5), Axis("RiderType", values=["aggressive"])], tol=0.01,
+    result = falsify(scenario, [Axis("TimeShift", 1, 5), Axis("RiderType", values=["aggressive"])], tol=0.01,
                      controllers=controllers)  # fmt: skip
     found = [(r.low, r.high) for r in result.regions]
     assert len(found) == len(windows)
