@@ -91,6 +91,8 @@ FIRST = {
     "language_independent_z38.json": ((50, 50, 3, 47), "sealed for a round of reader work"),
     "language_independent_z39.json": ((50, 50, 11, 49), "sealed for a round of reader work"),
     "language_independent_z40.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
+    "language_independent_z41.json": ((50, 50, 7, 45), "measured when written"),
+    "language_independent_z42.json": ((50, 50, 19, 49), "measured when written"),
 }
 
 

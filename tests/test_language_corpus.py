@@ -107,6 +107,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z38.json": (50, 3),
     ROOT / "tests" / "data" / "language_independent_z39.json": (50, 11),
     ROOT / "tests" / "data" / "language_independent_z40.json": (50, 4),
+    ROOT / "tests" / "data" / "language_independent_z41.json": (50, 7),
+    ROOT / "tests" / "data" / "language_independent_z42.json": (50, 19),
 }
 
 
