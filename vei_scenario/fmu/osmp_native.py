@@ -31,7 +31,7 @@ from pathlib import Path
 
 from vei_scenario.core.sources import compiler, source_dir
 from vei_scenario.errors import VeiInputError
-from vei_scenario.fmu.native import c_source_dir, fmi_header_dir, variables_header
+from vei_scenario.fmu.native import START_VALUES_UNIT, c_source_dir, fmi_header_dir, variables_header
 from vei_scenario.fmu.osmp_parameters import BuildRecord, annotate, declared_variables, start_text
 from vei_scenario.fmu.packaging import write_fmu
 from vei_scenario.fmu.variables import SPECS, ModelSpec
@@ -337,7 +337,7 @@ def _compile(build: Path, cc: str, models: tuple[str, ...], binary: str) -> None
         renames = [f"-D{n}={m}_{n}" for n in _RENAMED]
         for unit in (f"{m}/{m}_model.c", "fmu_common.c", "osmp_model.c"):
             obj = f"{m}/{Path(unit).stem}.o"
-            flags = _CFLAGS if unit != "fmu_common.c" else _START_VALUES_CFLAGS
+            flags = _CFLAGS if unit != START_VALUES_UNIT else _START_VALUES_CFLAGS
             _run([cc, *flags, "-Wall", *renames, f"-I{m}", "-I.", "-c", unit, "-o", obj], build, f"compiling {unit}")
             objects.append(obj)
     generated = sorted(str(p.relative_to(build)) for p in (build / "gen").rglob("*.c"))
