@@ -419,15 +419,22 @@ def _speller():
     )
 
 
+@lru_cache(maxsize=64)
+def _normalised(text: str) -> str:
+    """``text`` lowercased and normalised as :func:`_tokens` reads it (cached: a reading tokenises its
+    text several ways, all from this)."""
+    text = text.lower().replace("\u2019", "'").replace("’", "'")
+    text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
+    text = ncap_rewrite(text, _actor_word)
+    return _NCAP_NAME.sub(_ncap_said, text)
+
+
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false or the text writes the word only with its own capital,
     a name: "Hanley Rd" is no "Harley"; brackets kept as words if ``brackets``)."""
     names = proper_names(text) if spell else frozenset()
-    text = text.lower().replace("\u2019", "'").replace("’", "'")
-    text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
-    text = ncap_rewrite(text, _actor_word)
-    text = _NCAP_NAME.sub(_ncap_said, text)
+    text = _normalised(text)
     out = []
     found = (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text)
     for k, tok in enumerate(found):
@@ -712,9 +719,15 @@ def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     past the last word, where callers ask what follows a word that ends the text)."""
     if not 0 <= i < len(tokens):
         return None
-    key = _best(tokens, i)
+    return _kind_in(tuple(tokens[i : i + _LONGEST_KEY]))
+
+
+@lru_cache(maxsize=1 << 16)
+def _kind_in(window: tuple[str, ...]) -> tuple[str, int] | None:
+    """:func:`_kind_at` at the start of ``window`` (cached as :func:`_best_in` is)."""
+    key = _best_in(window)
     if key is not None and len(key) > 1 and TABLE[key][0] != "actor" and TABLE.get(key[:1], ("",))[0] == "actor":
-        if tokens[i + len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
+        if window[len(key) - 1] == key[-1] + "s":  # ("the bus stops": the bus, then its verb, as scan reads it)
             key = key[:1]
     return (str(TABLE[key][1]), len(key)) if key is not None and TABLE[key][0] == "actor" else None
 
