@@ -341,7 +341,8 @@ def _compile(build: Path, cc: str, models: tuple[str, ...], binary: str) -> None
             _run([cc, *flags, "-Wall", *renames, f"-I{m}", "-I.", "-c", unit, "-o", obj], build, f"compiling {unit}")
             objects.append(obj)
     generated = sorted(str(p.relative_to(build)) for p in (build / "gen").rglob("*.c"))
-    kept = _GENERATED_OBJECTS.get(_generated_key(build, cc, generated), {})
+    key = _generated_key(build, cc, generated)
+    kept = _GENERATED_OBJECTS.get(key, {})
     for unit in ("vei_models.c", "osmp_wrapper.c", *generated):
         obj = unit[:-2] + ".o"
         if obj in kept:
@@ -350,9 +351,8 @@ def _compile(build: Path, cc: str, models: tuple[str, ...], binary: str) -> None
             warn = "-w" if unit.startswith("gen") else "-Wall"  # (protoc-c's code as it comes: its warnings not ours)
             _run([cc, *_CFLAGS, warn, "-I.", "-Igen", "-c", unit, "-o", obj], build, f"compiling {unit}")
         objects.append(obj)
-    _GENERATED_OBJECTS[_generated_key(build, cc, generated)] = {
-        unit[:-2] + ".o": (build / (unit[:-2] + ".o")).read_bytes() for unit in generated
-    }
+    if not kept:
+        _GENERATED_OBJECTS[key] = {unit[:-2] + ".o": (build / (unit[:-2] + ".o")).read_bytes() for unit in generated}
     link = [cc, "-shared", "-s", "-pthread", "-o", binary, *objects, str(_runtime_archive(cc)),
             "-Wl,--exclude-libs,ALL", "-lm"]  # fmt: skip
     _run(link, build, "linking the participant")
