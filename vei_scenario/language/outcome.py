@@ -2668,6 +2668,13 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order; ``named``: the head words the reader named the
     story's road users by ("golf" of "a Golf pulled out"), none of them a thing hit."""
+    return list(_outcome_cues(said, named))
+
+
+@lru_cache(maxsize=256)
+def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
+    """``outcome_cues``, kept per text: a reading asks for the same text's cues up to three times (its
+    outcome, its stated intent, whether the ego evaded), and the cues are frozen."""
     tokens = _fields_answered(said.split())
     story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
     cues: list[Cue] = []
@@ -2926,7 +2933,7 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
         cues.append(Cue("alarm", "emergency"))  # (AEB triggered, high criticality, fear: see decide)
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
-    return cues
+    return tuple(cues)
 
 
 #: What a road user that has left the way is, or has done ("was gone", "was already across", "had cleared").

@@ -607,7 +607,16 @@ def _actor_at(tokens: list[str], i: int) -> bool:
 
 def _best(tokens: list[str], i: int) -> tuple[str, ...] | None:
     """The longest phrase at ``i``; of equally long ones the one written as the text has it."""
+    if not _starts_phrase(tokens[i]):
+        return None
     return _best_in(tuple(tokens[i : i + _LONGEST_KEY]))
+
+
+@lru_cache(maxsize=1 << 14)
+def _starts_phrase(word: str) -> bool:
+    """Whether a table phrase may start at ``word`` (one of its forms begins one). Most words begin
+    none, and for them no phrase need be looked for in the words that follow."""
+    return any(w in _BY_FIRST for w in forms(word))
 
 
 #: The most words a table phrase has: what follows them cannot change the phrase found at a word.
@@ -717,7 +726,7 @@ def _relation_length(tokens: list[str], k: int) -> int:
 def _kind_at(tokens: list[str], i: int) -> tuple[str, int] | None:
     """The road-user type a phrase at ``i`` names and its length, or None (for :mod:`discourse`; also
     past the last word, where callers ask what follows a word that ends the text)."""
-    if not 0 <= i < len(tokens):
+    if not 0 <= i < len(tokens) or not _starts_phrase(tokens[i]):
         return None
     return _kind_in(tuple(tokens[i : i + _LONGEST_KEY]))
 
