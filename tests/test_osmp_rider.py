@@ -50,10 +50,14 @@ def _compare(scenario: Path, plugs: dict[str, str], out: Path, values: dict) -> 
 
 
 PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
+#: The configurations participants are built for (their values the start values): the replayed rider with
+#: the planner off and the aggressive social force with the planner on (every code path of the build);
+#: all five run on participants built once with the defaults (test_*_built_with_the_defaults_*).
+BUILT_FOR = [c for c in CONFIGURATIONS if c[0] in (1, 5)]
 
 
 @pytest.mark.parametrize("plugs", sorted(PLUGS))
-@pytest.mark.parametrize(("number", "values"), [(n, v) for n, _, v in CONFIGURATIONS])
+@pytest.mark.parametrize(("number", "values"), [(n, v) for n, _, v in BUILT_FOR])
 def test_the_osmp_models_reproduce_the_built_in_ones_on_the_studys_configurations(case_study, tmp_path, number, values,
                                                                                    plugs):  # fmt: skip
     got = _compare(case_study, PLUGS[plugs], tmp_path, {**values, "TimeShift": "2.197"})
