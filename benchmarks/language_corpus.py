@@ -93,6 +93,8 @@ FIRST = {
     "language_independent_z40.json": ((50, 50, 4, 43), "sealed for a round of reader work"),
     "language_independent_z41.json": ((50, 50, 7, 45), "measured when written"),
     "language_independent_z42.json": ((50, 50, 19, 49), "measured when written"),
+    "language_independent_z43.json": ((50, 50, 8, 48), "measured when written"),
+    "language_independent_z44.json": ((50, 50, 15, 47), "measured when written"),
 }
 
 

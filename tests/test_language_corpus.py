@@ -109,6 +109,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z40.json": (50, 4),
     ROOT / "tests" / "data" / "language_independent_z41.json": (50, 7),
     ROOT / "tests" / "data" / "language_independent_z42.json": (50, 19),
+    ROOT / "tests" / "data" / "language_independent_z43.json": (50, 8),
+    ROOT / "tests" / "data" / "language_independent_z44.json": (50, 15),
 }
 
 
