@@ -192,10 +192,10 @@ def test_falsify_finds_every_failure_window_of_a_dense_grid_with_a_tenth_of_its_
     result = falsify(scenario, [Axis("TimeShift", 1, 5), Axis("RiderType", values=["aggressive"])], tol=0.01,
                      controllers=controllers)  # fmt: skip
     found = [(r.low, r.high) for r in result.regions]
-    assert len(found) == len(windows)
-    for (a, b), (lo, hi) in zip(windows, found):
-        assert abs(lo - a) <= step + 1e-4 and abs(hi - b) <= step + 1e-4, (windows, found)
-        assert lo <= a and hi >= b  # (the search's window holds every failing point of the grid)
+    for a, b in windows:  # (each inside one region, whose edges are failing points 0.01 s from the grid's)
+        assert any(lo <= a and hi >= b and a - lo <= 0.0101 and hi - b <= 0.0101 for lo, hi in found), (windows, found)
+    for lo, hi in found:  # (a region no grid window is in: narrower than the grid's step, which steps over it)
+        assert any(lo <= a and hi >= b for a, b in windows) or hi - lo < step, (windows, found)
     assert result.runs <= 0.1 * 401, result.runs
 
 

@@ -43,7 +43,9 @@ def _road(ax, road_file: Path | None, bbox) -> None:
                 outlines.append(np.asarray(poly.exterior.coords))
                 colours.append("#e4e4e4" if area.lane_type == "driving" else "#f2efe6")
     if outlines:
-        ax.add_collection(PolyCollection(outlines, facecolors=colours, edgecolors="#bbbbbb", linewidths=0.3, zorder=0))
+        lanes = PolyCollection(outlines, facecolors=colours, edgecolors="#bbbbbb", linewidths=0.3, zorder=0)
+        lanes.set_joinstyle("miter")  # (a patch's corners, as each piece had)
+        ax.add_collection(lanes)
 
 
 def _style(r, name: str) -> tuple[str, float]:
