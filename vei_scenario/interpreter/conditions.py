@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import operator
+from functools import lru_cache
 
 from vei_scenario.core import _core, layout
 from vei_scenario.interpreter.context import Context
@@ -63,6 +64,16 @@ def comparator(rule: str):
 
 def compare(rule: str, a: float, b: float) -> bool:
     return comparator(rule)(a, b)
+
+
+@lru_cache(maxsize=1024)
+def _number(text: str) -> float | None:
+    """``float(text)``, or None where ``text`` is no number. Kept per text: a parameter condition tests a
+    word such as "true" every step, and a failed conversion costs far more than a lookup."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
 
 
 #: ``steady_steps`` of a value that cannot change while the road users cruise.
@@ -134,8 +145,11 @@ class ParameterCondition(Condition):
 
     def test(self, ctx: Context) -> bool:
         current = getattr(ctx, self.store)[self.name]
+        a, b = _number(current), _number(self.value)
         try:
-            return compare(self.rule, float(current), float(self.value))
+            if a is None or b is None:  # (a word: "true", "aggressive")
+                raise ValueError(current)
+            return compare(self.rule, a, b)
         except ValueError:
             if self.rule == "equalTo":
                 return current == self.value
