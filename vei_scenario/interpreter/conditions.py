@@ -146,16 +146,17 @@ class ParameterCondition(Condition):
     def test(self, ctx: Context) -> bool:
         current = getattr(ctx, self.store)[self.name]
         a, b = _number(current), _number(self.value)
-        try:
-            if a is None or b is None:  # (a word: "true", "aggressive")
-                raise ValueError(current)
-            return compare(self.rule, a, b)
-        except ValueError:
-            if self.rule == "equalTo":
-                return current == self.value
-            if self.rule == "notEqualTo":
-                return current != self.value
-            return False
+        if a is not None and b is not None:
+            try:
+                return compare(self.rule, a, b)
+            except ValueError:  # (a rule no comparison has)
+                pass
+        # (a word: "true", "aggressive")
+        if self.rule == "equalTo":
+            return current == self.value
+        if self.rule == "notEqualTo":
+            return current != self.value
+        return False
 
     def steady_steps(self, ctx: Context, bounds) -> int:  # only an action sets one
         return STEADY
