@@ -95,6 +95,8 @@ FIRST = {
     "language_independent_z42.json": ((50, 50, 19, 49), "measured when written"),
     "language_independent_z43.json": ((50, 50, 8, 48), "measured when written"),
     "language_independent_z44.json": ((50, 50, 15, 47), "measured when written"),
+    "language_independent_z45.json": ((50, 50, 11, 47), "measured when written"),
+    "language_independent_z46.json": ((50, 50, 19, 45), "measured when written"),
 }
 
 

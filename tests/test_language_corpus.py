@@ -111,6 +111,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z42.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z43.json": (50, 8),
     ROOT / "tests" / "data" / "language_independent_z44.json": (50, 15),
+    ROOT / "tests" / "data" / "language_independent_z45.json": (50, 11),
+    ROOT / "tests" / "data" / "language_independent_z46.json": (50, 20),
 }
 
 

@@ -966,3 +966,52 @@ def test_a_speed_of_what_did_not_happen_is_no_ones(text, mph):
 )
 def test_a_guessed_or_past_speed_is_still_read(text, mph):
     assert _ego(text) == pytest.approx(mph * MPH, rel=1e-3)
+
+
+# --- "km" said for km/h, a change of speed drawn as an arrow, the speed left when the subject vehicle strikes -----
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was going slow maybe 20 km. A lady crossed the road in front of me.", 20),
+        ("I go behind a cyclist at 15 km because I cannot pass.", 15),
+        ("I was doing 60 km on the ring road when a van cut in.", 60),
+        ("A boy on an e-scooter cut in front of my car at full speed, maybe 25 km. I was at 30 km.", 30),
+    ],
+    ids=["going-maybe", "at", "doing-on-a-road", "the-ego-after-the-rider"],
+)
+def test_km_after_a_word_of_a_speed_held_is_km_h(text, kph):
+    assert _ego(text) == pytest.approx(kph * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was at 15 km from the city when a van cut in front of me.",
+        "We were doing 20 km a day. A van cut in front of me.",
+        "I was going 5 km further when a van cut in front of me.",
+    ],
+    ids=["from-a-place", "a-day", "further"],
+)
+def test_km_of_how_far_is_no_speed(text):
+    assert _ego(text) is None
+
+
+@pytest.mark.parametrize(
+    "text, unit, speed",
+    [
+        ("SV 68 mph -> 49 mph. HGV changes lane into SV lane.", MPH, 68),
+        ("Ego speed 50 -> 30 km/h. A cyclist crosses from the right.", KPH, 50),
+        ("Ego 50 km/h \u2192 30 km/h while a cyclist crosses from the right.", KPH, 50),
+    ],
+    ids=["unit-on-both", "unit-after", "unicode-arrow"],
+)
+def test_an_arrow_between_two_speeds_starts_from_the_first(text, unit, speed):
+    assert _ego(text) == pytest.approx(speed * unit)
+
+
+def test_the_speed_the_subject_vehicle_strikes_at_after_its_driver_brakes_is_no_start_speed():
+    text = (
+        "SV on straight rural 2-lane at 41 mph (GPS). Ped walks out from the L shoulder. Subject driver reacts "
+        "~0.8 s before impact and brakes; SV strikes ped at ~25 mph, right front."
+    )
+    assert _ego(text) == pytest.approx(41 * MPH)

@@ -163,7 +163,7 @@ def test_a_compound_contact_verb_in_two_words(text, intent):
     [
         ("scooter crossing L->R at 15 km/h", "from the left at"),
         ("pedestrian walks left -> right", "walks from the left"),
-        ("lead car slows 50 -> 30 km/h", "50 30 km/h"),
+        ("lead car slows 50 -> 30 km/h", "slows from 50 to 30 km/h"),  # (a change: from the first value)
     ],
     ids=["l-r", "left-right", "numbers"],
 )

@@ -453,7 +453,7 @@ def speedometer_reading(tokens: list[str], i: int) -> bool:
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction
 #: ("braked but hit him"), which keeps the subject before it.
-_EGO_STRIKER = frozenset({"i", "we", "ego", "and", "but", ",", "then"})
+_EGO_STRIKER = frozenset({"i", "we", "ego", "sv", "vut", "and", "but", ",", "then"})
 _ADVERBS = frozenset({"still", "then", "just", "eventually", "nevertheless", "finally", "only", "unfortunately"})
 _AT_HEDGES = ABOUT | {"at", "an", "a", "estimated", "maybe", "some"}
 
@@ -502,7 +502,9 @@ def impact_after_braking(tokens: list[str], i: int) -> bool:
     return any(_egos_braking(tokens, b) for b in range(verb))
 
 
-_EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})
+_EGO_WORDS = frozenset({"i", "we", "ego", "my", "our", "sv", "vut"})
+#: What names the ego's driver in a naturalistic-driving narrative ("the subject driver brakes").
+_SUBJECT_DRIVER = (("subject", "driver"), ("subject", "vehicle"))
 
 
 def _egos_braking(tokens: list[str], b: int) -> bool:
@@ -514,6 +516,8 @@ def _egos_braking(tokens: list[str], b: int) -> bool:
     start = sentence_start(tokens, b, SENTENCE_END)
     if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
         return True
+    if tokens[start] == "subject" or any(tuple(tokens[k : k + 2]) in _SUBJECT_DRIVER for k in range(start, b - 1)):
+        return True  # ("Subject driver reacts late and brakes", "Subject brakes": the ego's driver)
     return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)
 
 

@@ -77,6 +77,16 @@ _UNIT_FORMS = [
     (re.compile(r"(\d)\s*m" + _JOIN + r"s(?:ec)?" + _PER), r"\1 m/s"),
     (re.compile(r"(\d)\s*(?:met(?:er|re)s?|m)\s*/\s*sec(?:ond)?s?\b(?!\s*\^)"), r"\1 m/s"),
 ]
+#: "km" after a number said as a speed is held ("at 15 km", "going maybe 20 km", "speed was 40 km"):
+#: km/h said short, as many write it. Not a distance: one followed by where or how far it goes ("at 15
+#: km from the city", "doing 20 km a day", "going 5 km further"), or after a verb of covering a distance.
+_KM_AS_SPEED = re.compile(
+    r"\b(at|going|doing|speed|speed was|speed is|speed of)[,:]?\s+"
+    r"((?:(?:slow|slowly|fast|very|quite|about|around|approx\.?|approximately|maybe|only|just|like|roughly|almost|"
+    r"nearly|max|~)[,\s]*)*(?:[5-9]|[1-9]\d{1,2})(?:\.\d+)?)\s*kms?(?![-\w/])"
+    r"(?!\s+(?:away|from|to|further|farther|more|ahead|behind|later|before|after|of|long|per|each|every|an?|north|"
+    r"south|east|west|past|beyond|outside|radius|stretch|trip|journey|left|remaining|mark|marker|post|point)\b)"
+)
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = _UNIT_FORMS + [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
@@ -86,6 +96,7 @@ _UNITS = _UNIT_FORMS + [
     # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])(?!\s*(?:dash|video|footage|cam|hdr|uhd))"), r"\1 km/h"),
     (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
+    (_KM_AS_SPEED, r"\1 \2 km/h"),  # ("going slow, maybe 20 km", "at 15 km": km/h said short)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
     (re.compile(r"(\d)\s*mins?\b"), r"\1 minutes"),  # ("45 mins": minutes, before the speller reads "minis")
@@ -753,6 +764,11 @@ def _side_put_right(m: re.Match) -> str:
 
 #: Arrows ("->", "=>", "-->", "\u2192"), with the spaces around them: a note's "what follows from it".
 _ARROW = re.compile(r"\s*(?:-+>|=+>|[\u2190-\u21ff\u27f6\u27f9])+\s*")
+#: An arrow between two values, the first with or without its unit ("slows 50 -> 30 km/h", "SV 68 mph ->
+#: 49 mph"): a change of value, from the first to the second (no range, and the first is what it was).
+_VALUE_ARROW = re.compile(
+    r"(?<![\w.:])(\d+(?:\.\d+)?)(\s*(?:km/h|km/hr|kmh|kph|kmph|mph|m/s))?\s*(?:-+>|=+>|[\u2192\u27f6\u27f9])\s*(?=\d)"
+)
 
 
 def _arrow_break(m: re.Match) -> str:
@@ -869,6 +885,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"[ ]*\t\s*", ". ", text.strip("\t"))  # (the cells of a row pasted from a sheet, as bars)
     # an arrow of a note ("no braking -> impact") ends a clause as a comma does: what stands before it
     # does not govern what follows
+    text = _VALUE_ARROW.sub(r"from \1\2 to ", text)
     text = _ARROW.sub(_arrow_break, text)
     # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
     # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
