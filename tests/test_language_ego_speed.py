@@ -1015,3 +1015,57 @@ def test_the_speed_the_subject_vehicle_strikes_at_after_its_driver_brakes_is_no_
         "~0.8 s before impact and brakes; SV strikes ped at ~25 mph, right front."
     )
     assert _ego(text) == pytest.approx(41 * MPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Ego changes lane 1 -> 2 at 80 km/h; a truck brakes ahead.",
+        "Ego at 80 km/h, lane 2 -> 3, a truck brakes ahead.",
+        "The road narrows 3 -> 2 lanes and a truck brakes in front of me at 80 km/h.",
+    ],
+    ids=["lane-change", "lane-after-the-speed", "lanes-narrowing"],
+)
+def test_an_arrow_between_numbers_without_a_speed_unit_is_no_change_of_speed_nor_a_time(text):
+    """("lane 1 -> 2": a lane, not "from 1 to 2", which reads as a clock time)."""
+    reading = read(text)
+    assert reading.ego_speed_mps == pytest.approx(80 * KPH) or reading.ego_speed_mps is None
+    assert reading.time is None
+
+
+def test_chained_arrows_start_from_the_first_value_and_a_limits_arrow_is_no_speed():
+    assert _ego("Ego 50 km/h -> 30 km/h -> 0, a child runs out in front of me.") == pytest.approx(50 * KPH)
+    (lead,) = read("Lead car 80 -> 60 -> 40 km/h in front of the ego.").actors
+    assert lead.speed_mps == pytest.approx(80 * KPH)
+    text = "Speed limit 50 -> 30 km/h zone; a child runs out in front of me at 30 km/h."
+    assert _ego(text) == pytest.approx(30 * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The crash happened at 50 km on the A1; a truck braked in front of me.",
+        "At 50 km the road narrows and a truck merges into my lane.",
+        "The van broke down at 12 km and I braked behind it.",
+        "A car braked in front of me at 25 km into the trip.",
+        "Speed of 30 km is the limit here; a van cut in front of me.",
+        "I was at 15 km and 20 m from the junction when a van cut in.",
+    ],
+    ids=["happened-at", "sentence-opening", "broke-down-at", "into-the-trip", "the-limit", "and-metres"],
+)
+def test_km_of_a_place_on_the_road_is_no_speed(text):
+    assert _ego(text) is None
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("POV ahead of SV brakes hard; SV strikes POV at 25 mph.", 25 * MPH / KPH),
+        ("The lead car in front of the VUT brakes; VUT hits it at 30 km/h.", 30),
+    ],
+    ids=["pov-ahead-of-sv", "lead-in-front-of-vut"],
+)
+def test_a_strike_after_anothers_braking_is_the_subject_vehicles_speed(text, kph):
+    """The braking is the lead's ("the POV ahead of the SV brakes"): the SV's speed at the strike is all
+    that is said of it, so it stays the ego's."""
+    assert _ego(text) == pytest.approx(kph * KPH)

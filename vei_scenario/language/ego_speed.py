@@ -502,9 +502,13 @@ def impact_after_braking(tokens: list[str], i: int) -> bool:
     return any(_egos_braking(tokens, b) for b in range(verb))
 
 
-_EGO_WORDS = frozenset({"i", "we", "ego", "my", "our", "sv", "vut"})
-#: What names the ego's driver in a naturalistic-driving narrative ("the subject driver brakes").
-_SUBJECT_DRIVER = (("subject", "driver"), ("subject", "vehicle"))
+_EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})
+#: The test's names for the ego in engineers' and annotators' narratives ("SV brakes", "the VUT braked").
+_SUBJECT_VEHICLES = frozenset({"sv", "vut"})
+#: Words after which such a name is no subject but where another is ("the car in front of the SV brakes").
+_PLACED_BY = frozenset(
+    {"of", "behind", "than", "to", "from", "with", "by", "past", "beside", "passing", "toward", "towards"}
+)
 
 
 def _egos_braking(tokens: list[str], b: int) -> bool:
@@ -516,8 +520,11 @@ def _egos_braking(tokens: list[str], b: int) -> bool:
     start = sentence_start(tokens, b, SENTENCE_END)
     if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
         return True
-    if tokens[start] == "subject" or any(tuple(tokens[k : k + 2]) in _SUBJECT_DRIVER for k in range(start, b - 1)):
-        return True  # ("Subject driver reacts late and brakes", "Subject brakes": the ego's driver)
+    if tokens[start] == "subject":
+        return True  # ("Subject driver reacts late and brakes": the ego's driver, read as "subject")
+    named = [k for k in range(start, b) if tokens[k] in _SUBJECT_VEHICLES]
+    if named and not _PLACED_BY & set(tokens[start : named[0]]):
+        return True  # ("SV reacts late and brakes"; not "the POV ahead of the SV brakes": another's braking)
     return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)
 
 

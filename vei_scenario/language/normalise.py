@@ -77,16 +77,34 @@ _UNIT_FORMS = [
     (re.compile(r"(\d)\s*m" + _JOIN + r"s(?:ec)?" + _PER), r"\1 m/s"),
     (re.compile(r"(\d)\s*(?:met(?:er|re)s?|m)\s*/\s*sec(?:ond)?s?\b(?!\s*\^)"), r"\1 m/s"),
 ]
-#: "km" after a number said as a speed is held ("at 15 km", "going maybe 20 km", "speed was 40 km"):
-#: km/h said short, as many write it. Not a distance: one followed by where or how far it goes ("at 15
-#: km from the city", "doing 20 km a day", "going 5 km further"), or after a verb of covering a distance.
+#: "km" after a number said as a speed is held ("going maybe 20 km", "doing 60 km", "speed was 40 km", "I go
+#: behind him at 15 km"): km/h said short, as many write it. Not a distance: one followed by where or how
+#: far it goes ("at 15 km from the city", "doing 20 km a day", "going 5 km further", "25 km into the trip"),
+#: and "at" only in a clause of going ("was at", "driving at", "went behind him at"), not a place ("the crash
+#: happened at 50 km", "At 50 km the road narrows").
 _KM_AS_SPEED = re.compile(
     r"\b(at|going|doing|speed|speed was|speed is|speed of)[,:]?\s+"
     r"((?:(?:slow|slowly|fast|very|quite|about|around|approx\.?|approximately|maybe|only|just|like|roughly|almost|"
     r"nearly|max|~)[,\s]*)*(?:[5-9]|[1-9]\d{1,2})(?:\.\d+)?)\s*kms?(?![-\w/])"
     r"(?!\s+(?:away|from|to|further|farther|more|ahead|behind|later|before|after|of|long|per|each|every|an?|north|"
-    r"south|east|west|past|beyond|outside|radius|stretch|trip|journey|left|remaining|mark|marker|post|point)\b)"
+    r"south|east|west|past|beyond|outside|radius|stretch|trip|journey|left|remaining|mark|marker|post|point|into|"
+    r"out|down|up|along|lap|laps|limit|is the limit|and\s+\d+)\b)"
 )
+#: Verbs of going (and "was"/"were" of being somewhere at a speed) that make a clause's "at N km" a speed.
+_GOING_BEFORE_AT = re.compile(
+    r"\b(?:go|goes|going|went|gone|drive|drives|driving|drove|driven|ride|rides|riding|rode|travel\w*|cruis\w*|"
+    r"move|moves|moving|moved|head\w*|come|comes|coming|came|was|were|am|i'm|we're)\b(?![^.;!?]*\b(?:happened|"
+    r"occurred|broke down|stopped|parked)\b)[^.;!?]*$"
+)
+
+
+def _km_as_speed(m: re.Match) -> str:
+    """``m`` of :data:`_KM_AS_SPEED` with its "km" as km/h, or as written where its "at" is no clause of going."""
+    if m.group(1) == "at" and not _GOING_BEFORE_AT.search(m.string, max(0, m.start() - 80), m.start()):
+        return m.group(0)
+    return f"{m.group(1)} {m.group(2)} km/h"
+
+
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = _UNIT_FORMS + [
     (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
@@ -96,7 +114,7 @@ _UNITS = _UNIT_FORMS + [
     # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
     (re.compile(r"(\d)\s*(?:kph|kmh|k's|ks|k)(?![\w'])(?!\s*(?:dash|video|footage|cam|hdr|uhd))"), r"\1 km/h"),
     (re.compile(r"(\d)\s*(?:klicks?|clicks)\b"), r"\1 km/h"),  # ("80 klicks": kilometres, the Canadian's km/h)
-    (_KM_AS_SPEED, r"\1 \2 km/h"),  # ("going slow, maybe 20 km", "at 15 km": km/h said short)
+    (_KM_AS_SPEED, _km_as_speed),  # ("going slow, maybe 20 km", "at 15 km": km/h said short)
     (re.compile(r"m/s\s*\^\s*2|m/s/s|m/sec\^?2"), "m/s²"),  # ("decel 6 m/s^2": an acceleration)
     (re.compile(r"(\d)(km/h|mph|m/s|m)\b"), r"\1 \2"),
     (re.compile(r"(\d)\s*mins?\b"), r"\1 minutes"),  # ("45 mins": minutes, before the speller reads "minis")
@@ -764,11 +782,25 @@ def _side_put_right(m: re.Match) -> str:
 
 #: Arrows ("->", "=>", "-->", "\u2192"), with the spaces around them: a note's "what follows from it".
 _ARROW = re.compile(r"\s*(?:-+>|=+>|[\u2190-\u21ff\u27f6\u27f9])+\s*")
-#: An arrow between two values, the first with or without its unit ("slows 50 -> 30 km/h", "SV 68 mph ->
-#: 49 mph"): a change of value, from the first to the second (no range, and the first is what it was).
+#: Arrows between values, at least one with its speed unit ("slows 50 -> 30 km/h", "SV 68 mph -> 49 mph",
+#: "80 -> 60 -> 40 km/h"): a change of speed, from the first value to the last (no range, and the first is
+#: what it was). Not a lane, a count or a time ("lane 1 -> 2", "3 -> 2 lanes"), nor a limit ("limit 50 -> 30").
+_SPEED_UNIT = r"(?:km/h|km/hr|kmh|kph|kmph|mph|m/s)\b"
+_ARROW_ONLY = r"(?:-+>|=+>|[\u2192\u21d2\u2794\u27f6\u27f9])"
 _VALUE_ARROW = re.compile(
-    r"(?<![\w.:])(\d+(?:\.\d+)?)(\s*(?:km/h|km/hr|kmh|kph|kmph|mph|m/s))?\s*(?:-+>|=+>|[\u2192\u27f6\u27f9])\s*(?=\d)"
+    rf"(?<![\w.:\-\u2212])(\d+(?:\.\d+)?)(\s*{_SPEED_UNIT})?"
+    rf"((?:\s*{_ARROW_ONLY}\s*\d+(?:\.\d+)?(?:\s*{_SPEED_UNIT})?)+)"
 )
+_LAST_VALUE = re.compile(rf"{_ARROW_ONLY}\s*(\d+(?:\.\d+)?)(\s*{_SPEED_UNIT})?\s*$")
+
+
+def _value_arrow(m: re.Match) -> str:
+    """``m`` of :data:`_VALUE_ARROW` as "from <first> to <last>" where it is a change of speed, else as written."""
+    last = _LAST_VALUE.search(m.group(3))
+    limit = re.search(r"\blimits?\W*$", m.string[max(0, m.start() - 12) : m.start()])
+    if last is None or limit or not (m.group(2) or last.group(2)):
+        return m.group(0)
+    return f"from {m.group(1)}{m.group(2) or ''} to {last.group(1)}{last.group(2) or ''}"
 
 
 def _arrow_break(m: re.Match) -> str:
@@ -885,7 +917,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"[ ]*\t\s*", ". ", text.strip("\t"))  # (the cells of a row pasted from a sheet, as bars)
     # an arrow of a note ("no braking -> impact") ends a clause as a comma does: what stands before it
     # does not govern what follows
-    text = _VALUE_ARROW.sub(r"from \1\2 to ", text)
+    text = _VALUE_ARROW.sub(_value_arrow, text)
     text = _ARROW.sub(_arrow_break, text)
     # a spaced dash before a word ("light rain - delivery truck ...", "triggered 22:16 - lead vehicle"): a
     # break in the sentence, as a comma is (between numbers, "30 - 40 km/h", it is a range)
