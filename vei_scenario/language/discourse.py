@@ -10,8 +10,7 @@ reader scans them (:func:`resolve`).
 - **New or known.** An indefinite article opens a new referent ("a cyclist", "another cyclist"); a
   definite article, or a bare singular noun inside a clause, is the most recent one of its type ("ego
   stays behind cyclist", "the silver hatchback" → "the hatchback"); a definite general noun is the
-  most recent vehicle ("the front vehicle" after "a coach" → "the truck"), as is a bare one opening a
-  clause of a note that leaves its articles out ("Lead vehicle brakes"); an apposition (", a coach,")
+  most recent vehicle ("the front vehicle" after "a coach" → "the truck"); an apposition (", a coach,")
   is the same one; a name in brackets is its name ("a passenger car (the challenger) ... challenger
   speed 90 km/h"), as is "speed of cyclist 15 km/h".
 - **One road user, not two.** A person on or riding a vehicle is one rider of it ("a lad on one of
@@ -2258,16 +2257,6 @@ def _mentions_again(tokens: list[str], kind_at: KindAt, known: Known) -> list[st
                 continue
             if same is None:
                 referents.append(Referent(p.kind, noun))
-        elif (
-            p.det == ""
-            and general
-            and not apart
-            and (p.start == 0 or out[p.start - 1] in PUNCT)
-            and any(r.kind in VEHICLES for r in referents)
-        ):
-            out.insert(p.start, "the")  # ("... following a pickup. Lead vehicle brakes": a note's "the" left out)
-            i = p.head + 1
-            continue
         elif p.det == "" and referents and _bare_again(out, p, referents, kind_at):
             out.insert(p.start, "the")  # ("... ego stays behind cyclist": the cyclist named before)
             last_end = p.end + 1
