@@ -520,10 +520,10 @@ def _egos_braking(tokens: list[str], b: int) -> bool:
     start = sentence_start(tokens, b, SENTENCE_END)
     if _EGO_WORDS & set(tokens[start:b]):  # ("I saw him late, braked, ...": the subject of its sentence)
         return True
-    if tokens[start] == "subject":
-        return True  # ("Subject driver reacts late and brakes": the ego's driver, read as "subject")
+    if any(tokens[k] == "subject" and (k == start or tokens[k - 1] == "the") for k in range(start, b)):
+        return True  # ("(The) subject driver reacts late and brakes": the ego's driver, read as "subject")
     named = [k for k in range(start, b) if tokens[k] in _SUBJECT_VEHICLES]
-    if named and not _PLACED_BY & set(tokens[start : named[0]]):
+    if named and not _PLACED_BY & set(tokens[max(start, named[0] - 3) : named[0]]):
         return True  # ("SV reacts late and brakes"; not "the POV ahead of the SV brakes": another's braking)
     return b >= 1 and tokens[b - 1] == "the" and (b == 1 or tokens[b - 2] in SENTENCE_END)
 

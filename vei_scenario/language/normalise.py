@@ -976,6 +976,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
+    text = _VALUE_ARROW.sub(_value_arrow, text)  # (again, its unit now written as a symbol: "68 -> 49 mi/h")
     text = spoken_lengths.in_digits(text)  # ("a metre", "half a foot": as figures, then as metres)
     text = _LENGTHS.sub(_lengths, text)
     text = _HOUR_OF.sub(_hour_of, text)
