@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from osmp_plugs import BUILT_FOR, PLUGS
 
 from vei_scenario.cli import main
 from vei_scenario.fmu import osmp_native
@@ -29,12 +30,6 @@ from vei_scenario.sut.osmp import merge_address, read_osmp_ports, split_address
 
 MISSING = osmp_native.missing()
 pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
-
-PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
-#: The configurations participants are built for (their values the start values): the replayed rider with
-#: the planner off and the aggressive social force with the planner on (every code path of the build);
-#: all five run on participants built once with the defaults (test_*_built_with_the_defaults_*).
-BUILT_FOR = [c for c in CONFIGURATIONS if c[0] in (1, 5)]
 
 
 def _deviation(a, b) -> float:

@@ -14,6 +14,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from osmp_plugs import BUILT_FOR, PLUGS
 
 from vei_scenario.cli import main
 from vei_scenario.study import CONFIGURATIONS
@@ -47,13 +48,6 @@ def _compare(scenario: Path, plugs: dict[str, str], out: Path, values: dict) -> 
     done = subprocess.run(argv, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
-
-
-PLUGS = {"rider": {"scooter_1": "sfm"}, "planner": {"Ego": "cap"}, "both": {"Ego": "cap", "scooter_1": "sfm"}}
-#: The configurations participants are built for (their values the start values): the replayed rider with
-#: the planner off and the aggressive social force with the planner on (every code path of the build);
-#: all five run on participants built once with the defaults (test_*_built_with_the_defaults_*).
-BUILT_FOR = [c for c in CONFIGURATIONS if c[0] in (1, 5)]
 
 
 @pytest.mark.parametrize("plugs", sorted(PLUGS))

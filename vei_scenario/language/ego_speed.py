@@ -451,9 +451,11 @@ def speedometer_reading(tokens: list[str], i: int) -> bool:
 
 #: Verbs of contact (lemmas): a speed said with one is the speed at impact.
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "crash", "smash", "plough", "rear-end", "ram"})
+#: The test's names for the ego in engineers' and annotators' narratives ("SV brakes", "the VUT braked").
+_SUBJECT_VEHICLES = frozenset({"sv", "vut"})
 #: Who does the striking where it is the ego: the narrator, the ego, or no subject after a conjunction
 #: ("braked but hit him"), which keeps the subject before it.
-_EGO_STRIKER = frozenset({"i", "we", "ego", "sv", "vut", "and", "but", ",", "then"})
+_EGO_STRIKER = frozenset({"i", "we", "ego", "and", "but", ",", "then"}) | _SUBJECT_VEHICLES
 _ADVERBS = frozenset({"still", "then", "just", "eventually", "nevertheless", "finally", "only", "unfortunately"})
 _AT_HEDGES = ABOUT | {"at", "an", "a", "estimated", "maybe", "some"}
 
@@ -503,8 +505,6 @@ def impact_after_braking(tokens: list[str], i: int) -> bool:
 
 
 _EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})
-#: The test's names for the ego in engineers' and annotators' narratives ("SV brakes", "the VUT braked").
-_SUBJECT_VEHICLES = frozenset({"sv", "vut"})
 #: Words after which such a name is no subject but where another is ("the car in front of the SV brakes").
 _PLACED_BY = frozenset(
     {"of", "behind", "than", "to", "from", "with", "by", "past", "beside", "passing", "toward", "towards"}
