@@ -140,6 +140,7 @@ class ParameterCondition(Condition):
 
     def __init__(self, el, ctx: Context) -> None:
         self.name, self.value, self.rule = (el.get(self.ref) or "").lstrip("$"), el.get("value"), el.get("rule")
+        self.cmp = comparator(self.rule)
         if self.name not in getattr(ctx, self.store):
             raise ctx.error(el, f"{el.tag} on undeclared {self.what} {self.name!r}")
 
@@ -148,7 +149,7 @@ class ParameterCondition(Condition):
         a, b = _number(current), _number(self.value)
         if a is not None and b is not None:
             try:
-                return compare(self.rule, a, b)
+                return self.cmp(a, b)
             except ValueError:  # (a rule no comparison has)
                 pass
         # (a word: "true", "aggressive")
