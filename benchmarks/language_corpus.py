@@ -97,6 +97,8 @@ FIRST = {
     "language_independent_z44.json": ((50, 50, 15, 47), "measured when written"),
     "language_independent_z45.json": ((50, 50, 11, 47), "measured when written"),
     "language_independent_z46.json": ((50, 50, 19, 45), "measured when written"),
+    "language_independent_z47.json": ((50, 50, 4, 46), "measured when written"),
+    "language_independent_z48.json": ((50, 50, 15, 43), "measured when written"),
 }
 
 
