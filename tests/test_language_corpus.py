@@ -113,8 +113,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z44.json": (50, 15),
     ROOT / "tests" / "data" / "language_independent_z45.json": (50, 11),
     ROOT / "tests" / "data" / "language_independent_z46.json": (50, 20),
-    ROOT / "tests" / "data" / "language_independent_z47.json": (50, 4),
-    ROOT / "tests" / "data" / "language_independent_z48.json": (50, 15),
+    ROOT / "tests" / "data" / "language_independent_z47.json": (50, 7),
+    ROOT / "tests" / "data" / "language_independent_z48.json": (50, 17),
 }
 
 

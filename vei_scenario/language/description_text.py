@@ -1,5 +1,5 @@
 """A description as ``vei describe`` reads it: terminal escapes and control characters taken out,
-whitespace made plain, and nothing to read refused.
+whitespace made plain within each line, and nothing to read refused.
 
 Why: a description is pasted from anywhere (a terminal, a ticket, a chat), and it ends up in the
 scenario's FileHeader, where XML allows no control characters, and on the user's console, where an
@@ -27,9 +27,11 @@ def plain_text(text: str) -> str:
 
 
 def readable_description(text: str) -> str:
-    """The description to read: :func:`plain_text` of ``text``; a VeiInputError when nothing is left to
-    read (empty, blank, or no letter or digit at all)."""
-    clean = plain_text(text)
+    """The description to read: :func:`plain_text` of each of ``text``'s lines, its blank lines left out;
+    a VeiInputError when nothing is left to read (empty, blank, or no letter or digit at all). Its line
+    breaks stay: a pasted list, form or transcript says by them where an item or a speaker's turn ends,
+    and the reader reads them so."""
+    clean = "\n".join(line for line in map(plain_text, text.splitlines()) if line)
     if not clean:
         raise VeiInputError(None, "description", f"is empty: describe the scenario in words, e.g. '{EXAMPLE}'")
     if not any(c.isalnum() for c in clean):

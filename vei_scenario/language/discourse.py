@@ -1619,12 +1619,65 @@ _RESPONDING_BE = frozenset({"is", "are", "was", "were", "has", "have", "had", "b
 _RESPONSE_ENDS = PUNCT | {"now", "and", "but", "soon", "too", "also"}
 
 
+#: Words that make a vehicle's phrase one that answers a call ("ambulance", "fire engine", "police car",
+#: "tow truck", "recovery truck", "breakdown truck").
+_ANSWERING = frozenset({"ambulance", "ambulances", "fire", "police", "tow", "recovery", "breakdown", "rescue"})
+#: Verbs whose object is a vehicle asked for or sent, not one on the road ("I'm sending an ambulance",
+#: "can I get an ambulance", "do you want an ambulance", "I asked for a tow truck").
+_ASK_FOR = frozenset(
+    {"send", "dispatch", "get", "need", "want", "request", "call", "arrange", "order", "book", "summon", "ask"}
+)
+#: Words between such a verb and its object ("send you an ambulance", "ask for an ambulance").
+_ASKED_BETWEEN = frozenset({"me", "us", "him", "her", "them", "you", "for"})
+#: The determiners of a vehicle asked for: one not yet there ("an ambulance", "another", none). One named
+#: with "the" is there already ("I needed the ambulance behind me to get through").
+_ASKED_DETERMINERS = frozenset({"", "a", "an", "another", "one", "two", "some"})
+#: Words after such a vehicle's noun that make it the service, not a vehicle ("Ambulance service, is the
+#: patient breathing?", "ambulance control").
+_SERVICE = frozenset({"service", "services", "control", "station", "dispatch", "line", "trust"})
+#: Words after the vehicle that say it is somewhere on the road ("I've got an ambulance behind me", "we
+#: need a fire engine past the cars"), not asked for.
+_PLACED_AFTER = frozenset(
+    {"behind", "ahead", "beside", "in", "on", "up", "next", "alongside", "coming", "trying", "past", "through"}
+)
+#: The words of a call-taker's question after a service named as a greeting ("Ambulance, is the patient
+#: breathing?", "Police, what's your emergency?").
+_CALL_TAKERS = frozenset(
+    {"is", "are", "what", "what's", "whats", "where", "where's", "how", "which", "can", "do", "tell"}
+)
+
+
+def _asked_for(tokens: list[str], p: Phrase) -> bool:
+    """Whether ``p`` is a vehicle that answers a call, asked for or sent ("I'm sending an ambulance",
+    "can I get an ambulance?", "do you need an ambulance", "I've got an ambulance started my way"), or
+    named as its service ("Ambulance service, is the patient breathing?", "CT: Ambulance, what's the
+    address?", "Which service? C: Ambulance."). Why: an emergency call and the statements after one
+    name the vehicles that will come, which are no road users of what happened. One on the road stays
+    ("an ambulance came through the red", "I've got an ambulance behind me", "Fire engine, blue lights
+    on, came through the red", "I needed the ambulance behind me to get through")."""
+    if not _ANSWERING & set(tokens[p.start : p.end]):
+        return False
+    after = tokens[p.end] if p.end < len(tokens) else ""
+    if after in _SERVICE:
+        return True
+    if not p.det and (p.start == 0 or tokens[p.start - 1] in (":", ".", "?", "!", ";")):
+        nxt = tokens[p.end + 1] if p.end + 1 < len(tokens) else ""
+        if after in ("", ".", "?", "!", "please") or (after == "," and nxt in _CALL_TAKERS) or after == "and":
+            return True  # ("CT: Ambulance, is the patient breathing?", "C: Ambulance. And police.": the service)
+    if p.det not in _ASKED_DETERMINERS or after in _PLACED_AFTER:
+        return False
+    k = p.start - 1
+    while k >= 0 and k > p.start - 3 and tokens[k] in _ASKED_BETWEEN:
+        k -= 1
+    return k >= 0 and _lemma_in(tokens[k], _ASK_FOR)
+
+
 def _responders(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """A vehicle said to be on its way, called or sent for ("Ambulance is on its way.", "an ambulance was
-    called", "two fire engines en route") answers a call after what happened: no road user of the
-    scene, with or without an article and whatever the outcome said. The rest of the sentence stays; a
-    vehicle that does something on the road ("an ambulance on a blue light came through the red") is
-    untouched."""
+    called", "two fire engines en route", "I'm sending an ambulance": :func:`_asked_for`) answers a call
+    after what happened: no road user of the scene, with or without an article and whatever the
+    outcome said. The rest of the sentence stays; a vehicle that does something on the road ("an
+    ambulance on a blue light came through the red") is untouched."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -1640,7 +1693,7 @@ def _responders(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[
         way = next((len(r) for r in _ON_THE_WAY if tuple(tokens[j : j + len(r)]) == r), 0)
         way = way if j + way >= len(tokens) or tokens[j + way] in _RESPONSE_ENDS else 0
         called = be and any(tuple(tokens[j : j + len(r)]) == r for r in _CALLED)
-        if not (way or called):
+        if not (way or called or _asked_for(tokens, p)):
             out.extend(tokens[i : p.end])
             i = p.end
             continue

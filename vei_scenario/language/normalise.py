@@ -17,6 +17,7 @@ import re
 import unicodedata
 from functools import lru_cache
 
+from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import spoken_lengths
 from vei_scenario.language.lemmas import english, lemmas
@@ -32,9 +33,8 @@ _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fourty": 40, "fifty": 50, "si
 NUMBER_WORDS = frozenset(w for w in [*_ONES, *_TENS, "hundred"] if w not in ("a", "an"))
 _NUMBER_WORD = "|".join(sorted([w for w in _ONES if w not in ("a", "an")] + list(_TENS) + ["hundred"], key=len)[::-1])
 #: A number in words: "forty", "forty-five", "a hundred and ten", "one hundred", "hundred".
-_NUMBER = re.compile(
-    rf"\b((?:(?:a|an|{_NUMBER_WORD})[\s-]+)?(?:{_NUMBER_WORD})(?:(?:[\s-]+(?:and[\s-]+)?)(?:{_NUMBER_WORD}))*)\b"
-)
+_NUMBER_SAID = rf"(?:(?:a|an|{_NUMBER_WORD})[\s-]+)?(?:{_NUMBER_WORD})(?:(?:[\s-]+(?:and[\s-]+)?)(?:{_NUMBER_WORD}))*"
+_NUMBER = re.compile(rf"\b({_NUMBER_SAID})\b")
 #: Units after which a number in words is a quantity (its unit words as the reader reads them).
 _UNIT_AFTER = re.compile(
     r"\s*(?:-\s*)?(km/h|kph|kmh|mph|m/s|miles?\b|kilomet(?:er|re)s?\b|km\b|met(?:er|re)s?\b|m\b|seconds?\b|s\b"
@@ -52,9 +52,45 @@ _GUESS_BEFORE = re.compile(
 )
 #: "<number> speed" said as a speed ("sixty speed only"), not a thing of speeds ("a forty speed limit").
 _SPEED_AFTER = re.compile(r"\s+speed\b(?!\s*(?:limit|bump|hump|camera|zone|sign|trap|gun|breaker|-))")
-#: The same words, then a number and "or"/"to" ("doing fifty or sixty", "at thirty to forty"): the
-#: second number of a choice of speeds is a speed as the first is.
-_CHOICE_BEFORE = re.compile(r"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+[a-z\d-]+\s+(?:or|to)\s+$")
+#: The same words, then a number and "or"/"to" or a comma ("doing fifty or sixty", "at thirty to forty",
+#: "doing ten, fifteen tops"): the second number of a choice of speeds is a speed as the first is.
+_CHOICE_BEFORE = re.compile(
+    rf"\b(?:at|doing|about|like|going|around|roughly|approximately)\s+(?:\d+|{_NUMBER_WORD})(?:-[a-z]+)?"
+    r"(?:\s+(?:or|to)|\s*,)\s+$"
+)
+#: A verb of going, then hedges only ("doing like twelve", "going about ten"): a number in words after it
+#: is a speed down to a walker's or a scooter's where its phrase ends as a speed's does
+#: (:data:`_SLOW_SPEED_ENDS`); after "at" or a hedge alone one under fifteen may be a clock's hour or a
+#: count ("at ten", "like two").
+_GOING_HEDGED = re.compile(
+    r"\b(?:doing|going|driving|travell?ing|riding|moving|cruising)\s+(?:(?:about|around|like|maybe|roughly|"
+    r"only|just|barely|probably)\s+)*$"
+)
+#: How a slow speed's phrase ends after its number: a mark, where or when one went ("doing like twelve on
+#: the path", "doing ten when"), or a range's top ("doing ten, fifteen tops"); not a count's noun ("doing
+#: like ten things") nor a clock's aside ("going about seven, after the pub shut").
+_SLOW_SPEED_ENDS = re.compile(
+    r"\s*(?:[.;!?]|$|,?\s+(?:on|along|through|down|up|in|into|past|round|around|across|behind|towards|when|as|"
+    r"tops|max)\b|,\s*[a-z-]+\s+(?:tops|max)\b)"
+)
+_MANNER_WORD = "|".join(sorted(Q.MANNER)) + r"|[a-z]{3,}ly"
+#: A verb of going, a particle (and its pronoun or a short place) and how one went, set off by commas, before
+#: a number ("going up slowly, forty", "going past it, slowly, maybe forty", "going on the roundabout,
+#: slowly, maybe twenty-five", "driving, carefully, about thirty"): the speed the verb says, as "going slowly
+#: 40" is (:func:`quantities.before_manner`), where the number ends its phrase (:data:`_PHRASE_ENDS`).
+_MANNER_BEFORE = re.compile(
+    r"\b(?:going|doing|driving|travell?ing|riding|moving|cruising|went|drove|rode)(?:\s+(?:"
+    + "|".join(sorted(Q.PARTICLES))
+    + r")(?:\s+(?:it|them|him|her|(?:the|a|this|that|my)\s+[a-z-]+))?)?(?:[\s,]+(?:"
+    + _MANNER_WORD
+    + r"))+[\s,]+(?:(?:maybe|about|around|like|roughly|probably|say)\s+)?$"
+)
+#: A mark or the text's end right after a number: the end of its phrase.
+_PHRASE_ENDS = re.compile(r"\s*(?:[,.;!?]|$)")
+#: The least number in words read as a speed after a verb of going and hedges (:data:`_GOING_HEDGED`).
+_LEAST_GOING = 5
+#: ... and after anything else that makes it one ("at fifteen", "like twenty").
+_LEAST_SAID = 15
 
 #: Thousands a vehicle has done ("has about 380k on it", "with 200k on the clock"): a mileage, which "k"
 #: after a number of a verb of having says, and no speed ("doing 100k" is one).
@@ -190,11 +226,17 @@ def _numbers_in_words(text: str) -> str:
         before = before or _GUESS_BEFORE.search(text, max(0, m.start() - 40), m.start())
         before = before or _SPEED_AFTER.match(text, m.end())  # ("sixty speed only")
         before = before or _after_modifiers(text, m)  # ("at a cautious thirty", "at a very sensible sixty-five")
+        if not before and _PHRASE_ENDS.match(text, m.end()):  # ("going up slowly, forty, ...")
+            before = _MANNER_BEFORE.search(text, max(0, m.start() - 60), m.start())
         if after is None and before:
+            going = _GOING_HEDGED.search(text, max(0, m.start() - 40), m.start()) and _SLOW_SPEED_ENDS.match(
+                text, m.end()
+            )  # ("doing like twelve on the path"; not "doing like ten things")
+            least = _LEAST_GOING if going else _LEAST_SAID
             value = _number_value(m.group(1))  # ("at forty": a speed, said without its unit)
             if value is None and (said := _range_said(m.group(1))) is not None:
-                return said if int(said.split("-")[0]) >= 15 else m.group(0)  # ("doing forty forty-five")
-            return str(value) if value is not None and value >= 15 else m.group(0)
+                return said if int(said.split("-")[0]) >= least else m.group(0)  # ("doing forty forty-five")
+            return str(value) if value is not None and value >= least else m.group(0)
         joined = "-" in text[m.end() : after.start(1)] if after is not None else False
         if after is None or (joined and after.group(1)[0] in "lfy"):
             return m.group(0)  # ("two-lane road", "a six-foot hedge" keep their words: a name, a size)
@@ -464,6 +506,52 @@ _BARE_CAR = re.compile(
     r"(?:(?<=[,.;:] )|(?<=\band )|(?<=\bbut )|(?<=\bso ))(?:car|vehicle)\b"
     r"(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))"
 )
+
+
+#: What only the ego's own driver-assistance system does, said of its vehicle: it beeps (not at someone,
+#: nor its horn), chimes or warns, gives a warning or a brake jolt, flashes its red warning, brakes, slows or
+#: stops by itself, phantom brakes, does not detect someone or show them on its screen, or does nothing.
+_SYSTEM_ACT = (
+    r"(?:(?:still|then|also|just|even|immediately|instantly|again|suddenly)\s+)*(?:"
+    r"(?:beeps|beeped|pinged|chimes|chimed)(?![^.;,!?]*\b(?:at|horn)\b)|warns|warned|alerts|alerted|"
+    r"(?:gave|gives|give)\s+(?:me\s+|us\s+)?(?:a|an|the)\s+(?:[\w'-]+\s+){0,2}(?:warning|alert|beep|chime|jolt|bong)s?"
+    r"(?=\s*(?:[,.;!?]|$|(?:and|at|when|as|but|before|then)\b))|"
+    r"flash(?:es|ed)\s+(?:the\s+|a\s+|its\s+)?(?:red|orange|amber|warning)|"
+    r"(?:braked|brakes|slowed|slows|stopped|stops)\s+(?:itself|on\s+its\s+own|by\s+itself|automatically)|"
+    r"phantom[- ]?brak\w*|did(?:n't|\s+not)?\s+(?:even\s+)?detect\b|"
+    r"did(?:n't|\s+not)?\s+(?:even\s+)?show\s+(?:[\w'-]+\s+){0,2}on\s+(?:the|its|my)\s+(?:screen|display|"
+    r"visuali[sz]ation|dash|dashboard|hud)\b|did\s+nothing|does\s+nothing)"
+)
+#: The vehicle of a clause, with "the" or none, whose act is the ego's system's ("Car beeps, flashes and does
+#: that pre-brake jerk", "the car still flashes the red bar", "Van flashed the red light on the windscreen
+#: and braked itself"): the narrator's own vehicle, the ego. Not one placed ("the car in front beeped").
+_OWN_SYSTEMS_VEHICLE = re.compile(
+    r"(?:(?<=^)|(?<=[.;:!?,]\s)|(?<=\band\s)|(?<=\bbut\s)|(?<=\bthen\s)|(?<=\bso\s))(?:the\s+)?"
+    r"(?:car|van|vehicle|suv)\s+(?=" + _SYSTEM_ACT + ")"
+)
+#: A road user brought in with "a" ("a car was waiting", "an old BMW"): "the car" after it may be that one.
+_BROUGHT_IN = re.compile(r"\b(?:a|an|another|one)\s+((?:[\w-]+\s+){0,2}[\w-]+)")
+#: The words of road users that are no motor vehicle, whom "the car" cannot name again.
+_NOT_MOTOR = frozenset(w for kind in ("pedestrian", "bicycle", "e-scooter") for w in L.ACTOR_NOUNS.get(kind, ()))
+
+
+def _own_systems_vehicle(text: str, known_noun) -> str:
+    """``text`` with the vehicle whose act only the ego's driver-assistance system does named as the ego
+    ("Car beeps, flashes and does that pre-brake jerk": "the ego beeps, ..."). Why: an owner writing of
+    their car's emergency braking or collision warning calls it "the car" and names no other by it; read
+    as a road-user noun it became a second car that beeps and brakes. Where a motor vehicle was brought
+    in before with "a" ("A car was waiting at the give way line. The car did nothing, then pulled
+    out"), "the car" may be that one, and the text is left as it is; so is a car placed ("the car in
+    front beeped")."""
+
+    def sub(m: re.Match) -> str:
+        for b in _BROUGHT_IN.finditer(text, 0, m.start()):
+            noun = known_noun(b.group(1))
+            if noun is not None and noun not in _NOT_MOTOR:
+                return m.group(0)
+        return "the ego "
+
+    return _OWN_SYSTEMS_VEHICLE.sub(sub, text)
 
 
 def _the_car_is_the_ego(text: str) -> str:
@@ -906,6 +994,78 @@ _FALLEN_FROM = re.compile(
 )
 
 
+#: A question of how fast the one asked was going ("How fast were you going?", "What speed were you
+#: doing?", "And your speed?"), to the end of its question mark.
+_SPEED_QUESTION = re.compile(
+    r"\b(?:how\s+(?:fast|quick(?:ly)?)\s+(?:were|was|are|r)\s+(?:you|u|ya)\b|what\s+speed\s+(?:were|was|are|did)\s+"
+    r"(?:you|u)\b|what\s+was\s+(?:your|ur)\s+speed\b)[^?\n]*\?|\b(?:your|ur)\s+speed\s*\?",
+    re.IGNORECASE,
+)
+#: A speaker's label opening a turn of a transcript ("C:", "Caller:", "A:", "[15:42] Driver:", "Call taker:"):
+#: one to three words.
+_TURN_LABEL = re.compile(r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:[ \t]*", re.I)
+#: The first number of an answer, in figures or words.
+_ANSWER_NUMBER = re.compile(rf"\b(\d+(?:\.\d+)?|{_NUMBER_SAID})\b", re.IGNORECASE)
+#: What may stand in an answer before its number: fillers, hedges and a yes or no ("Um, maybe thirty",
+#: "Not fast, fifteen", "Oh God, I don't know, forty?"), and nothing that says what the number is of
+#: ("I'm 82", "the limit is 30", "he did 50").
+_ANSWER_FILLERS = frozenset(
+    "um uh er erm ah oh hmm well yeah yes yep no nope so like about around maybe probably roughly approximately "
+    "only just not fast slow slowly very really quite i think reckon guess dunno don't do know sure say god "
+    "sorry honestly uh-huh".split()
+)
+#: What may follow an answer's number: its end, a mark, a unit of speed, a range's second number or a hedge.
+_ANSWER_ENDS = re.compile(
+    r"\s*(?:[.,?!;)]|$|-|(?:mph|km/h|kph|kmh|ks?|miles|kilomet(?:er|re)s|tops|max|maximum|ish|or|to|maybe|"
+    r"probably|at\s+most|at\s+least|odd|plus|i\s+think|i\s+reckon)\b)",
+    re.IGNORECASE,
+)
+
+
+def _the_answer(text: str, q: re.Match) -> int | None:
+    """Where the answer to the question ``q`` starts: after the label of the next speaker's turn, on
+    the same line or the next; None where the question is not itself a labelled turn (a question told
+    in a story: "I asked the rider: how fast were you going?") or no turn follows."""
+    line_start = text.rfind("\n", 0, q.start()) + 1
+    own = _TURN_LABEL.match(text, line_start)
+    if own is None or own.end() > q.start():
+        return None
+    label = _TURN_LABEL.match(text, q.end())
+    if label is None:
+        line_end = text.find("\n", q.end())
+        if line_end < 0 or text[q.end() : line_end].strip():
+            return None
+        label = _TURN_LABEL.match(text, line_end + 1)
+    return None if label is None else label.end()
+
+
+def speed_answered(text: str) -> str:
+    """``text`` with the answer to a question of the one asked's speed said as a speed ("CT: How fast were
+    you going? / C: Twenty? Not even. Twenty.": "C: i was doing Twenty, Not even. ..."; "Q. What speed
+    were you doing? A. 30, about."). Why: in a transcript of a call, an interview or a cross-examination
+    the speed is the answer's first number, said bare, with no verb before it. Only a number that opens
+    the answer (past fillers and hedges) and ends its phrase (a mark, a unit of speed, a range, a hedge)
+    is one: "I'm 82", "the limit is 30", "3 cars ahead" are left as said."""
+    out, at = [], 0
+    for q in _SPEED_QUESTION.finditer(text):
+        start = _the_answer(text, q) if q.start() >= at else None
+        if start is None:
+            continue
+        answer = text[start : start + 80].split("\n")[0]
+        number = _ANSWER_NUMBER.search(answer)
+        if number is None or not _ANSWER_ENDS.match(answer, number.end()):
+            continue
+        before = re.findall(r"[a-z'-]+", answer[: number.start()].lower())
+        if any(w not in _ANSWER_FILLERS for w in before):
+            continue
+        out += [text[at : start + number.start()], "i was doing ", number.group(0)]
+        at = start + number.end()
+        if text.startswith("?", at):  # ("Twenty? Not even.": a guess said as a question, still the answer)
+            out.append(",")
+            at += 1
+    return "".join(out) + text[at:]
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -1006,6 +1166,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
+    text = _own_systems_vehicle(text, known_noun)  # ("Car beeps and does that pre-brake jerk": the ego's system)
     text = _the_car_is_the_ego(text)
     text = _role_is_the_ego(text, known_noun)
     text = _observer(text, known_noun)

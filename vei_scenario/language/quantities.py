@@ -114,13 +114,22 @@ def before_hedge(tokens: list[str], i: int) -> str:
 
 #: Words of how one goes, besides adverbs in -ly, that stand between a verb of going and its bare speed ("going
 #: straight 40", "driving slow 20"), and the words that strengthen them ("very slowly", "quite carefully").
-_MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really"})
+MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really", "fast"})
 #: Words of a guess right before a number ("with about 60", "slowly, maybe 20").
 _HEDGE_WORDS = ABOUT | {"approx", "maybe", "like", "~", "some"}
 
 
 def _manner(word: str) -> bool:
-    return word in _MANNER or (len(word) > 4 and word.endswith("ly") and word not in APPROXIMATORS)
+    return word in MANNER or (len(word) > 4 and word.endswith("ly") and word not in APPROXIMATORS)
+
+
+#: Words between how one went and a bare number: hedges, bounds, and the commas that set the number off
+#: ("going slowly, maybe 40,").
+_BEFORE_ITS_NUMBER = APPROXIMATORS | BOUNDS | _HEDGE_WORDS | {","}
+
+
+#: What ends a number set off by a comma as a speed: a mark or the text's end ("going slowly, 40, and").
+_SET_OFF_ENDS = frozenset({"", ",", ".", ";", "!", "?", ")"})
 
 
 def before_manner(tokens: list[str], i: int) -> str:
@@ -131,14 +140,41 @@ def before_manner(tokens: list[str], i: int) -> str:
     do), and the number is still the speed the verb says; the caller still asks that the number end
     its phrase ("going slowly 2 cars behind" is no speed)."""
     k = i - 1
-    while k > 0 and (tokens[k] in APPROXIMATORS or tokens[k] in BOUNDS or tokens[k] in _HEDGE_WORDS):
+    while k > 0 and tokens[k] in _BEFORE_ITS_NUMBER:
         k -= 1
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    if "," in tokens[k + 1 : i] and not (nxt in _SET_OFF_ENDS or nxt in V.SPEED_UNITS):
+        return ""  # ("driving home carefully, 17 and just passed my test": an age said as an aside)
     start = k
     k -= k > 0 and tokens[k] == "with"
     n = 0
-    while k > 0 and n < 3 and _manner(tokens[k]):
-        k, n = k - 1, n + 1
+    while k > 0 and n < 3 and (_manner(tokens[k]) or (n and tokens[k] == ",")):
+        k, n = k - 1, n + (tokens[k] != ",")
+    if 0 < k < start:  # ("going up slowly, 40", "going past it, slowly, 40", "going on the bridge, slowly, 40")
+        k = _past_particle(tokens, k)
     return tokens[k] if k < start and k >= 0 else ""
+
+
+#: Particles and prepositions of where one goes, said between a verb of going and how one went ("going up
+#: slowly", "going past it, slowly").
+PARTICLES = frozenset(
+    {"up", "down", "along", "past", "by", "over", "through", "round", "around", "home", "back", "in", "out", "off",
+     "on", "into", "across"}
+)  # fmt: skip
+_PARTICLE_OBJECTS = frozenset({"it", "them", "him", "her"})
+
+
+def _past_particle(tokens: list[str], k: int) -> int:
+    """The index of the word before the particle and its object ending at ``k`` ("up", "past it", "on the
+    roundabout", after a comma or not), or ``k`` where none ends there."""
+    j = k - (tokens[k] == ",")
+    if j > 0 and tokens[j] in PARTICLES:
+        return j - 1
+    if j > 1 and tokens[j] in _PARTICLE_OBJECTS and tokens[j - 1] in PARTICLES:
+        return j - 2
+    if j > 2 and tokens[j - 1] in ("the", "a", "this", "that", "my") and tokens[j - 2] in PARTICLES:
+        return j - 3
+    return k
 
 
 def _start_of_guess(tokens: list[str], i: int) -> int:
@@ -425,6 +461,24 @@ def of_a_total(tokens: list[str], i: int) -> bool:
     return k >= 1 and tokens[k] == "of" and is_number(tokens[k - 1])
 
 
+#: Words after a number that count the steps of a setting (a following-distance or sensitivity setting:
+#: "ACC at 3 bars", "gap on 2 lines", "sensitivity at 4 notches").
+_SETTING_STEPS = frozenset("bar bars notch notches dot dots line lines click clicks step steps pip pips".split())
+#: The most steps a setting or a series counted so has ("3 of 5", "level 2 of 4"); a number out of more is
+#: a speed against its limit ("doing 30 of 30").
+_MOST_STEPS = 10
+
+
+def place_in_a_series(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is a place counted out of a total or a step of a setting ("ACC at 3 of
+    5", "time gap set to 3 (of 5)", "run 2 of 6", "ACC at 3 bars"): a setting or a count, no speed,
+    whatever "at" or "set to" stands before it (:func:`of_a_total` reads the total after "of")."""
+    k = i + 1 + (tokens[i + 1 : i + 2] == ["("])
+    if tokens[k : k + 1] == ["of"] and k + 1 < len(tokens) and is_number(tokens[k + 1]):
+        return float(tokens[k + 1]) <= _MOST_STEPS  # (not "doing 30 of 30", "48 (of 50 allowed)": the limit)
+    return tokens[i + 1 : i + 2] != [] and tokens[i + 1] in _SETTING_STEPS
+
+
 #: Names of a change of speed in a crash, as reconstruction reports write them: "delta-v" (also "delta v",
 #: "dV") and the energy equivalent speed, "EES": how much speed the crash took, not a speed travelled.
 _CRASH_CHANGES = frozenset({"delta-v", "deltav", "dv", "d-v", "ees"})
@@ -610,11 +664,12 @@ def carried_unit(
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
-    :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
-    neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
-    set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
-    own vehicle "the ego": "in the ute"). ``narrated``: the text is told in the first person, whose bare
-    speeds a value only mph limits round to makes mph (:func:`miles_limit_speed`)."""
+    :func:`imperial_lengths`), else km/h (the unit of a test engineer
+    who gives none; a motorway says neither: in heavy traffic 60 km/h is as likely there as 60 mph).
+    ``metric``: the text as written was set where km/h is signed (:func:`metric_country` of its tokens
+    before the reader named the ego's own vehicle "the ego": "in the ute"). ``narrated``: the text is
+    told in the first person, whose bare speeds a value only mph limits round to makes mph
+    (:func:`miles_limit_speed`)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]
@@ -709,10 +764,20 @@ _METRIC_ROAD_USERS = frozenset(
 )  # fmt: skip
 
 
+#: The police and emergency lines of countries that sign km/h by their own names (the Irish Gardai, the
+#: German Polizei and its Notruf, the Dutch and Belgian politie, the French gendarmes, the Italian
+#: carabinieri and polizia): a text that names one is set there, whatever else looks British ("a mile
+#: past the creamery", "the A7").
+_METRIC_POLICE = frozenset(
+    {"garda", "gardai", "polizei", "notruf", "politie", "gendarmerie", "gendarmes", "carabinieri", "polizia"}
+)
+
+
 def metric_country(tokens: list[str]) -> bool:
     """Whether the text is set where speeds are signed in km/h: a road of such a country by its own
-    name, a distance said in kilometres, or a road user by a name only such countries use."""
-    return any(t in _METRIC_ROADS or t in _METRIC_ROAD_USERS for t in tokens)
+    name, a distance said in kilometres, a road user by a name only such countries use, or its police
+    by their own name."""
+    return any(t in _METRIC_ROADS or t in _METRIC_ROAD_USERS or t in _METRIC_POLICE for t in tokens)
 
 
 #: A length in feet or yards ("ten feet ahead", "by a foot", "a few yards"), as written (the reader's

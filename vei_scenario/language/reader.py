@@ -114,7 +114,7 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.no_ones_place import without_places_of_no_one
-from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters
+from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters, speed_answered
 from vei_scenario.language.object_participle import participle_phrase
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.phrasal_nouns import phrasal_compound
@@ -811,6 +811,8 @@ def _number(
     if i >= 3 and tokens[i - 1] == "of" and tokens[i - 3] in ("lane", "lanes"):
         return "skip", value, 1  # ("in lane 1 of 3": how many lanes, no speed)
     if Q.of_a_total(tokens, i):  # ("Run 3 of about 6", "session 4 of 6": how many there are, no speed)
+        return "skip", value, 1
+    if Q.place_in_a_series(tokens, i):  # ("ACC at 3 of 5", "gap set to 3 (of 5)", "ACC at 3 bars": a setting)
         return "skip", value, 1
     prev = Q.before_hedge(tokens, i) if i > 0 else ""  # ("doing at least 70", "going well over 60")
     to_changed = tokens[i - 1] == "to" and _changes_speed_before(
@@ -1924,6 +1926,16 @@ def read(text: str) -> Reading:
     (:func:`who.unnamed_subjects`: of the first few, the first that gives its road users a behaviour);
     the noun is listed as not used."""
     text = plain_letters(text)  # ("piéton", "Fußgänger": the reader's words are plain letters)
+    answered = speed_answered(text)  # ("How fast were you going? / C: Twenty.": said as the caller's speed)
+    reading = _read_answered(answered)
+    if reading is not None and answered != text:  # (the words put in to say the answer are no words of the text)
+        written = set(re.findall(r"[a-z]+", text.lower()))
+        reading.ignored = [w for w in reading.ignored if w in written]
+    return reading
+
+
+def _read_answered(text: str) -> Reading:
+    """:func:`read` of ``text`` with its answers of speed said as speeds."""
     try:
         reading, refused = _read(text), None
     except NotUnderstood as e:
