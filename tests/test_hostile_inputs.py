@@ -298,6 +298,14 @@ def test_describe_on_an_ordinary_sentence_finishes(tmp_path):
     assert proc.returncode in (0, 2) and "Traceback" not in proc.stderr
 
 
+@pytest.mark.parametrize("text", ["a" * 20000, " ," * 50000 + " a van", "A van cut in. " * 1000])
+def test_describe_refuses_a_description_longer_than_it_reads(capsys, tmp_path, text):
+    """A whole document pasted as a description is refused at once, naming its length and the most read:
+    the reader's time and memory grow faster than a text's length (20 000 letters took gigabytes)."""
+    _refused(capsys, ["describe", text, "-o", str(tmp_path / "d"), "--count", "1"], "characters long", "10000")
+    assert not (tmp_path / "d").exists()
+
+
 def test_worker_errors_cross_process_boundaries_intact():
     import pickle
 

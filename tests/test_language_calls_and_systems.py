@@ -70,8 +70,27 @@ def test_the_answer_to_a_question_of_the_callers_speed_is_their_speed(text, kph)
         "CT: How fast were you going?\nC: I wasn't, I was parked. He did 50 easily and hit my door.",
         # asked in a story, not a transcript's turn
         "I stopped and asked the e-scooter rider: how fast were you going?\nRider: 25, it's limited.",
+        "Driver: I was moving off. The cop asked how fast were you going?\nCop: 55, the radar said. A van cut in.",
+        # "your speed" inside another question; two questions at once; a distance or a time answered
+        "Q: Was the lorry faster than your speed?\nA: Yes, 70 maybe. It overtook me and cut in.",
+        "Officer: What speed were you doing, and how old are you?\nMe: 17, sir. A cyclist came out and I hit him.",
+        "CT: How fast were you going?\nC: 40 miles, from Leeds, we'd been driving. A van cut in.",
+        "CT: How fast were you going?\nC: Yeah, 5 or so minutes ago. A van cut in.",
     ],
-    ids=["his-speed", "a-length", "no-turn", "an-age", "the-limit", "anothers", "asked-in-a-story"],
+    ids=[
+        "his-speed",
+        "a-length",
+        "no-turn",
+        "an-age",
+        "the-limit",
+        "anothers",
+        "asked-in-a-story",
+        "told-in-a-turn",
+        "inside-another-question",
+        "two-questions",
+        "a-distance",
+        "a-time",
+    ],
 )
 def test_no_answer_of_the_callers_speed_reads_none(text):
     assert _ego(text) is None
@@ -102,8 +121,21 @@ def test_a_bare_speed_after_a_verb_of_going_and_how_one_went_is_the_egos(text, k
         "I was driving home carefully, seventeen and just passed my test, when a van pulled out in front of me.",
         "I was doing like ten things at once, and a cyclist came out of a side road in front of me.",
         "We were going around eleven, after the pub shut, and a car pulled out in front of us.",
+        "I was driving home carefully, 17, only passed my test last month, when a van pulled out in front of me.",
+        "We were going home slowly, 4, 5 of us in the car, when a van cut in front of us.",
+        "I was driving slowly, twenty, thirty metres behind the van when it braked hard and I hit it.",
     ],
-    ids=["a-count", "a-count-of", "a-clock", "an-age", "things-done", "an-hour-going"],
+    ids=[
+        "a-count",
+        "a-count-of",
+        "a-clock",
+        "an-age",
+        "things-done",
+        "an-hour-going",
+        "an-age-figures",
+        "a-range-of-us",
+        "a-range-of-metres",
+    ],
 )
 def test_a_count_or_an_hour_after_how_one_went_is_no_speed(text):
     assert _ego(text) is None
@@ -137,8 +169,18 @@ def test_a_vehicle_asked_for_or_sent_is_no_road_user(text):
         "We need a bigger car, my wife said, as an ambulance cut across our lane on the ring road.",
         "I needed the ambulance behind me to get through so I mounted the kerb.",
         "Ambulance, blue lights on, came through the red and hit the back of a bus.",
+        "Other vehicle: Ambulance. Came through the red light and hit my passenger side.",
+        "We couldn't get a fire engine down the street because a van was parked across both lanes.",
     ],
-    ids=["on-the-road", "got-behind", "need-another", "needed-the-one-there", "opening-a-sentence"],
+    ids=[
+        "on-the-road",
+        "got-behind",
+        "need-another",
+        "needed-the-one-there",
+        "opening-a-sentence",
+        "a-field",
+        "get-placed",
+    ],
 )
 def test_an_ambulance_on_the_road_stays_a_road_user(text):
     assert "van" in _kinds(text)
@@ -192,8 +234,19 @@ def test_the_vehicle_whose_act_is_the_egos_system_is_the_ego(text, kinds):
         "A car was waiting at the give way line. The car did nothing for a few seconds, then pulled out.",
         "A car was tailgating me. The car gave me a warning flash of its headlights and overtook me.",
         "A cyclist was ahead. Then the car beeped twice at him and pulled out around me.",
+        "I was riding my e-scooter on the road. The car beeped and overtook me far too close.",
+        "I was on my bike at the junction. The car did not detect me and turned into me.",
     ],
-    ids=["placed", "beeped-at", "its-lights", "brought-in-before", "a-warning-flash", "beeped-twice-at"],
+    ids=[
+        "placed",
+        "beeped-at",
+        "its-lights",
+        "brought-in-before",
+        "a-warning-flash",
+        "beeped-twice-at",
+        "narrator-on-a-scooter",
+        "narrator-on-a-bike",
+    ],
 )
 def test_another_car_that_beeps_or_flashes_stays_a_road_user(text):
     assert "car" in _kinds(text)
@@ -225,3 +278,16 @@ def test_vei_describe_keeps_a_transcripts_turns():
     assert said == "CT: How fast were you going?\nC: Forty? Not more.\nC: A cyclist came the wrong way."
     assert _ego(said) == pytest.approx(40 * KPH)
     assert "doing" not in read(said).ignored  # (the words that say the answer as a speed are not the writer's)
+
+
+@pytest.mark.parametrize(
+    "text, said",
+    [
+        ("A cyclist came\nout of a side road on my left.", "A cyclist came out of a side road on my left."),
+        ("Time: 08:10\nweather: rain\n- a van cuts in", "Time: 08:10\nweather: rain\n- a van cuts in"),
+        ("A van\x1c hit me.\nIt drove off.", "A van hit me.\nIt drove off."),
+    ],
+    ids=["wrapped-sentence", "fields-and-items", "separator-is-no-break"],
+)
+def test_vei_describe_keeps_breaks_that_end_or_open_and_joins_wrapped_lines(text, said):
+    assert readable_description(text) == said

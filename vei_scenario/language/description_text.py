@@ -19,6 +19,10 @@ _ESCAPES = re.compile(r"\x1b\[[0-?]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\
 _CONTROLS = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\ud800-\udfff\ufffe\uffff]")
 
 EXAMPLE = "an e-scooter crosses from the right in front of the ego at 30 km/h"
+#: The longest description read, in characters: five times the longest of the thousands the reader is
+#: measured on (a pleading of about 1 800). A longer text is a whole document, not a scenario's
+#: description, and the reader's time grows faster than its length.
+MAX_DESCRIPTION = 10_000
 
 
 def plain_text(text: str) -> str:
@@ -26,14 +30,37 @@ def plain_text(text: str) -> str:
     return " ".join(_CONTROLS.sub(" ", _ESCAPES.sub(" ", text)).split())
 
 
+#: A line break as a text file writes one (not the vertical tab, form feed or separators ``str.splitlines``
+#: also breaks at, which :func:`plain_text` takes out as control characters).
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+#: A line's end that ends its sentence or field, where the break after it stays.
+_BREAK_KEPT = re.compile(r"[.!?:;)\]]$")
+#: A line's start that opens an item, a speaker's turn or a sentence ("- ", "2) ", "CT: ", "A van ..."), where
+#: the break before it stays; a wrapped line goes on in lower case ("came\nout of a side road").
+_LINE_OPENS = re.compile(r"(?:[-*\u2022\u00b7\u2013]\s|\d{1,2}[.)]\s|[^\W\d_][\w.'/-]*(?: [\w.'/-]+){0,2}:|[A-Z0-9\[])")
+
+
 def readable_description(text: str) -> str:
     """The description to read: :func:`plain_text` of each of ``text``'s lines, its blank lines left out;
-    a VeiInputError when nothing is left to read (empty, blank, or no letter or digit at all). Its line
-    breaks stay: a pasted list, form or transcript says by them where an item or a speaker's turn ends,
-    and the reader reads them so."""
-    clean = "\n".join(line for line in map(plain_text, text.splitlines()) if line)
+    a VeiInputError when nothing is left to read (empty, blank, or no letter or digit at all) or when
+    it is longer than :data:`MAX_DESCRIPTION`. A line break stays where it ends a sentence or a field
+    or opens an item, a speaker's turn or a sentence: a pasted list, form or transcript says by them
+    where an item or a turn ends, and the reader reads them so. A break inside a sentence (a text
+    wrapped at a width: "came" at one line's end, "out of a side road" at the next) is a space."""
+    lines = [line for line in map(plain_text, _LINE_BREAK.split(text)) if line]
+    clean = "".join(
+        line if k == 0 else ("\n" if _BREAK_KEPT.search(lines[k - 1]) or _LINE_OPENS.match(line) else " ") + line
+        for k, line in enumerate(lines)
+    )
     if not clean:
         raise VeiInputError(None, "description", f"is empty: describe the scenario in words, e.g. '{EXAMPLE}'")
+    if len(clean) > MAX_DESCRIPTION:
+        raise VeiInputError(
+            None,
+            "description",
+            f"is {len(clean)} characters long; vei describe reads up to {MAX_DESCRIPTION}: give the paragraph "
+            "that tells what happened",
+        )
     if not any(c.isalnum() for c in clean):
         raise VeiInputError(
             None, "description", f"has no words to read (only punctuation or symbols): e.g. '{EXAMPLE}'"

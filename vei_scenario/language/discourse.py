@@ -1638,8 +1638,11 @@ _SERVICE = frozenset({"service", "services", "control", "station", "dispatch", "
 #: Words after the vehicle that say it is somewhere on the road ("I've got an ambulance behind me", "we
 #: need a fire engine past the cars"), not asked for.
 _PLACED_AFTER = frozenset(
-    {"behind", "ahead", "beside", "in", "on", "up", "next", "alongside", "coming", "trying", "past", "through"}
+    "behind ahead beside in on up down along round around across over into out off next alongside coming trying "
+    "past through".split()
 )
+#: How far back a call-taker's "Which service?" may stand before the answer that names one.
+_SERVICE_ASKED = 8
 #: The words of a call-taker's question after a service named as a greeting ("Ambulance, is the patient
 #: breathing?", "Police, what's your emergency?").
 _CALL_TAKERS = frozenset(
@@ -1662,7 +1665,8 @@ def _asked_for(tokens: list[str], p: Phrase) -> bool:
         return True
     if not p.det and (p.start == 0 or tokens[p.start - 1] in (":", ".", "?", "!", ";")):
         nxt = tokens[p.end + 1] if p.end + 1 < len(tokens) else ""
-        if after in ("", ".", "?", "!", "please") or (after == "," and nxt in _CALL_TAKERS) or after == "and":
+        asked = "service" in tokens[max(0, p.start - _SERVICE_ASKED) : p.start]  # ("Which service? C: Ambulance.")
+        if (after == "," and nxt in _CALL_TAKERS) or (asked and after in ("", ".", "?", "!", "please", "and")):
             return True  # ("CT: Ambulance, is the patient breathing?", "C: Ambulance. And police.": the service)
     if p.det not in _ASKED_DETERMINERS or after in _PLACED_AFTER:
         return False

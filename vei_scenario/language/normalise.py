@@ -73,7 +73,7 @@ _SLOW_SPEED_ENDS = re.compile(
     r"\s*(?:[.;!?]|$|,?\s+(?:on|along|through|down|up|in|into|past|round|around|across|behind|towards|when|as|"
     r"tops|max)\b|,\s*[a-z-]+\s+(?:tops|max)\b)"
 )
-_MANNER_WORD = "|".join(sorted(Q.MANNER)) + r"|[a-z]{3,}ly"
+_MANNER_WORD = "|".join(sorted(Q.MANNER)) + r"|fast|[a-z]{3,}ly"
 #: A verb of going, a particle (and its pronoun or a short place) and how one went, set off by commas, before
 #: a number ("going up slowly, forty", "going past it, slowly, maybe forty", "going on the roundabout,
 #: slowly, maybe twenty-five", "driving, carefully, about thirty"): the speed the verb says, as "going slowly
@@ -85,8 +85,11 @@ _MANNER_BEFORE = re.compile(
     + _MANNER_WORD
     + r"))+[\s,]+(?:(?:maybe|about|around|like|roughly|probably|say)\s+)?$"
 )
-#: A mark or the text's end right after a number: the end of its phrase.
-_PHRASE_ENDS = re.compile(r"\s*(?:[,.;!?]|$)")
+#: What ends a number in words set off by commas as a speed: the sentence's end, or a comma and a word that
+#: opens the clause that goes on (:func:`quantities.set_off_speed_ends`, which asks the same of figures).
+_PHRASE_ENDS = re.compile(
+    r"\s*(?:[.;!?)]|$|,\s*(?:" + "|".join(sorted(Q.SET_OFF_OPENERS)) + r")\b)", re.IGNORECASE
+)
 #: The least number in words read as a speed after a verb of going and hedges (:data:`_GOING_HEDGED`).
 _LEAST_GOING = 5
 #: ... and after anything else that makes it one ("at fifteen", "like twenty").
@@ -520,7 +523,7 @@ _SYSTEM_ACT = (
     r"(?:braked|brakes|slowed|slows|stopped|stops)\s+(?:itself|on\s+its\s+own|by\s+itself|automatically)|"
     r"phantom[- ]?brak\w*|did(?:n't|\s+not)?\s+(?:even\s+)?detect\b|"
     r"did(?:n't|\s+not)?\s+(?:even\s+)?show\s+(?:[\w'-]+\s+){0,2}on\s+(?:the|its|my)\s+(?:screen|display|"
-    r"visuali[sz]ation|dash|dashboard|hud)\b|did\s+nothing|does\s+nothing)"
+    r"visuali[sz]ation|dash|dashboard|hud)\b|(?:did|does)\s+nothing(?=\s*(?:[,.;!?]|$)))"
 )
 #: The vehicle of a clause, with "the" or none, whose act is the ego's system's ("Car beeps, flashes and does
 #: that pre-brake jerk", "the car still flashes the red bar", "Van flashed the red light on the windscreen
@@ -531,6 +534,14 @@ _OWN_SYSTEMS_VEHICLE = re.compile(
 )
 #: A road user brought in with "a" ("a car was waiting", "an old BMW"): "the car" after it may be that one.
 _BROUGHT_IN = re.compile(r"\b(?:a|an|another|one)\s+((?:[\w-]+\s+){0,2}[\w-]+)")
+#: The narrator out of a vehicle: on a bike or scooter, on foot, crossing ("I was cycling home", "I was on my
+#: bike", "I was crossing the road"): "the car" that beeps or does not detect them is another's.
+_NARRATOR_OUT = re.compile(
+    r"\b(?:i|we)\s+(?:was|were|am|'m|are)\s+(?:just\s+)?(?:on\s+(?:my|a|our|the)\s+(?:[\w-]+\s+)?(?:bike|bicycle|"
+    r"scooter|e-scooter|escooter|moped|motorbike|skateboard)|on\s+foot|cycling|riding|walking|crossing|jogging|"
+    r"running|scooting)\b|\bmy\s+(?:bike|bicycle|e-scooter|escooter|scooter)\b",
+    re.IGNORECASE,
+)
 #: The words of road users that are no motor vehicle, whom "the car" cannot name again.
 _NOT_MOTOR = frozenset(w for kind in ("pedestrian", "bicycle", "e-scooter") for w in L.ACTOR_NOUNS.get(kind, ()))
 
@@ -543,6 +554,9 @@ def _own_systems_vehicle(text: str, known_noun) -> str:
     in before with "a" ("A car was waiting at the give way line. The car did nothing, then pulled
     out"), "the car" may be that one, and the text is left as it is; so is a car placed ("the car in
     front beeped")."""
+
+    if _NARRATOR_OUT.search(text):
+        return text
 
     def sub(m: re.Match) -> str:
         for b in _BROUGHT_IN.finditer(text, 0, m.start()):
@@ -998,9 +1012,12 @@ _FALLEN_FROM = re.compile(
 #: doing?", "And your speed?"), to the end of its question mark.
 _SPEED_QUESTION = re.compile(
     r"\b(?:how\s+(?:fast|quick(?:ly)?)\s+(?:were|was|are|r)\s+(?:you|u|ya)\b|what\s+speed\s+(?:were|was|are|did)\s+"
-    r"(?:you|u)\b|what\s+was\s+(?:your|ur)\s+speed\b)[^?\n]*\?|\b(?:your|ur)\s+speed\s*\?",
-    re.IGNORECASE,
+    r"(?:you|u)\b|what\s+was\s+(?:your|ur)\s+speed\b)[^?\n]*\?|(?:^|(?<=[:.?!])|\band\b)\s*(?:your|ur)\s+speed\s*\?",
+    re.IGNORECASE | re.MULTILINE,
 )
+#: A second question asked with the first ("What speed were you doing, and how old are you?"): the answer
+#: may be to either.
+_SECOND_QUESTION = re.compile(r"\band\s+(?:how|what|where|when|who|why|did|do|were|was|are|is|have|had)\b", re.I)
 #: A speaker's label opening a turn of a transcript ("C:", "Caller:", "A:", "[15:42] Driver:", "Call taker:"):
 #: one to three words.
 _TURN_LABEL = re.compile(r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:[ \t]*", re.I)
@@ -1016,8 +1033,8 @@ _ANSWER_FILLERS = frozenset(
 )
 #: What may follow an answer's number: its end, a mark, a unit of speed, a range's second number or a hedge.
 _ANSWER_ENDS = re.compile(
-    r"\s*(?:[.,?!;)]|$|-|(?:mph|km/h|kph|kmh|ks?|miles|kilomet(?:er|re)s|tops|max|maximum|ish|or|to|maybe|"
-    r"probably|at\s+most|at\s+least|odd|plus|i\s+think|i\s+reckon)\b)",
+    rf"\s*(?:[.,?!;)]|$|-|(?:mph|km/h|kph|kmh|ks?|tops|max|maximum|ish|maybe|probably|at\s+most|at\s+least|odd|"
+    rf"plus|i\s+think|i\s+reckon)\b|(?:or|to)\s+(?:\d|{_NUMBER_WORD}))",
     re.IGNORECASE,
 )
 
@@ -1028,8 +1045,11 @@ def _the_answer(text: str, q: re.Match) -> int | None:
     in a story: "I asked the rider: how fast were you going?") or no turn follows."""
     line_start = text.rfind("\n", 0, q.start()) + 1
     own = _TURN_LABEL.match(text, line_start)
-    if own is None or own.end() > q.start():
+    if own is None or own.end() > q.start() or _SECOND_QUESTION.search(q.group(0)):
         return None
+    asked = text[own.end() : q.start()].rstrip().lower()
+    if asked and not asked.endswith((".", "?", "!", "and", "ok", "okay", "so", "right")):
+        return None  # ("Driver: The cop asked how fast were you going?": a question told, not asked)
     label = _TURN_LABEL.match(text, q.end())
     if label is None:
         line_end = text.find("\n", q.end())
@@ -1041,8 +1061,8 @@ def _the_answer(text: str, q: re.Match) -> int | None:
 
 def speed_answered(text: str) -> str:
     """``text`` with the answer to a question of the one asked's speed said as a speed ("CT: How fast were
-    you going? / C: Twenty? Not even. Twenty.": "C: i was doing Twenty, Not even. ..."; "Q. What speed
-    were you doing? A. 30, about."). Why: in a transcript of a call, an interview or a cross-examination
+    you going? / C: Twenty? Not even. Twenty.": "C: i was doing Twenty, Not even. ..."; "Q: What speed
+    were you doing? A: 30, about."). Why: in a transcript of a call, an interview or a cross-examination
     the speed is the answer's first number, said bare, with no verb before it. Only a number that opens
     the answer (past fillers and hedges) and ends its phrase (a mark, a unit of speed, a range, a hedge)
     is one: "I'm 82", "the limit is 30", "3 cars ahead" are left as said."""

@@ -114,7 +114,7 @@ def before_hedge(tokens: list[str], i: int) -> str:
 
 #: Words of how one goes, besides adverbs in -ly, that stand between a verb of going and its bare speed ("going
 #: straight 40", "driving slow 20"), and the words that strengthen them ("very slowly", "quite carefully").
-MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really", "fast"})
+MANNER = frozenset({"straight", "slow", "steady", "normal", "careful", "very", "quite", "really"})
 #: Words of a guess right before a number ("with about 60", "slowly, maybe 20").
 _HEDGE_WORDS = ABOUT | {"approx", "maybe", "like", "~", "some"}
 
@@ -128,8 +128,22 @@ def _manner(word: str) -> bool:
 _BEFORE_ITS_NUMBER = APPROXIMATORS | BOUNDS | _HEDGE_WORDS | {","}
 
 
-#: What ends a number set off by a comma as a speed: a mark or the text's end ("going slowly, 40, and").
-_SET_OFF_ENDS = frozenset({"", ",", ".", ";", "!", "?", ")"})
+#: What may follow a number set off by commas as a speed: the sentence's end, or a comma and a word that
+#: opens the clause that goes on ("going slowly, 40, and a cyclist ...", "going up slowly, 40, I stopped").
+#: Not another number or a word of what the number counts ("carefully, 17, only passed my test", "slowly,
+#: 20, 30 metres behind", "slowly, 4, 5 of us", "slowly, 11, maybe half past").
+SENTENCE_ENDS = frozenset({"", ".", ";", "!", "?", ")"})
+SET_OFF_OPENERS = frozenset(
+    "and but then when as while so until till i we he she they it you his her the a my our".split()
+)
+
+
+def set_off_speed_ends(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i``, set off by a comma before it, ends as a speed does (see
+    :data:`SET_OFF_OPENERS`): a unit of speed, the sentence's end, or a comma and a clause's opener."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+    after = tokens[i + 2] if i + 2 < len(tokens) else ""
+    return nxt in V.SPEED_UNITS or nxt in SENTENCE_ENDS or (nxt == "," and after in SET_OFF_OPENERS)
 
 
 def before_manner(tokens: list[str], i: int) -> str:
@@ -142,9 +156,8 @@ def before_manner(tokens: list[str], i: int) -> str:
     k = i - 1
     while k > 0 and tokens[k] in _BEFORE_ITS_NUMBER:
         k -= 1
-    nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
-    if "," in tokens[k + 1 : i] and not (nxt in _SET_OFF_ENDS or nxt in V.SPEED_UNITS):
-        return ""  # ("driving home carefully, 17 and just passed my test": an age said as an aside)
+    if "," in tokens[k + 1 : i] and not set_off_speed_ends(tokens, i):
+        return ""  # ("driving home carefully, 17, only passed my test": an age said as an aside)
     start = k
     k -= k > 0 and tokens[k] == "with"
     n = 0

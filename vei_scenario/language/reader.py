@@ -1930,12 +1930,17 @@ def read(text: str) -> Reading:
     reading = _read_answered(answered)
     if reading is not None and answered != text:  # (the words put in to say the answer are no words of the text)
         written = set(re.findall(r"[a-z]+", text.lower()))
-        reading.ignored = [w for w in reading.ignored if w in written]
+        reading.ignored = [w for w in reading.ignored if w not in _ANSWER_WORDS or w in written]
     return reading
 
 
+#: The words :func:`speed_answered` puts before an answer's number ("i was doing 30").
+_ANSWER_WORDS = frozenset({"i", "was", "doing"})
+
+
 def _read_answered(text: str) -> Reading:
-    """:func:`read` of ``text`` with its answers of speed said as speeds."""
+    """:func:`read`'s work on ``text`` once its answers of speed are said as speeds: one reading, and where
+    it finds no road user, the readings with an unnamed subject as one (:func:`who.unnamed_subjects`)."""
     try:
         reading, refused = _read(text), None
     except NotUnderstood as e:
