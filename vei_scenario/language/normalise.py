@@ -87,9 +87,7 @@ _MANNER_BEFORE = re.compile(
 )
 #: What ends a number in words set off by commas as a speed: the sentence's end, or a comma and a word that
 #: opens the clause that goes on (:func:`quantities.set_off_speed_ends`, which asks the same of figures).
-_PHRASE_ENDS = re.compile(
-    r"\s*(?:[.;!?)]|$|,\s*(?:" + "|".join(sorted(Q.SET_OFF_OPENERS)) + r")\b)", re.IGNORECASE
-)
+_PHRASE_ENDS = re.compile(r"\s*(?:[.;!?)]|$|,\s*(?:" + "|".join(sorted(Q.SET_OFF_OPENERS)) + r")\b)", re.IGNORECASE)
 #: The least number in words read as a speed after a verb of going and hedges (:data:`_GOING_HEDGED`).
 _LEAST_GOING = 5
 #: ... and after anything else that makes it one ("at fifteen", "like twenty").
