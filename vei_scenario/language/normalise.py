@@ -81,7 +81,11 @@ _MANNER_WORD = "|".join(sorted(Q.MANNER)) + r"|fast|[a-z]{3,}ly"
 _MANNER_BEFORE = re.compile(
     r"\b(?:going|doing|driving|travell?ing|riding|moving|cruising|went|drove|rode)(?:\s+(?:"
     + "|".join(sorted(Q.PARTICLES))
-    + r")(?:\s+(?:it|them|him|her|(?:the|a|this|that|my)\s+[a-z-]+))?)?(?:[\s,]+(?:"
+    + r")(?:\s+(?:"
+    + "|".join(sorted(Q.PARTICLE_OBJECTS))
+    + "|(?:"
+    + "|".join(sorted(Q.PLACE_DETERMINERS))
+    + r")\s+[a-z-]+))?)?(?:[\s,]+(?:"
     + _MANNER_WORD
     + r"))+[\s,]+(?:(?:maybe|about|around|like|roughly|probably|say)\s+)?$"
 )
@@ -551,8 +555,8 @@ def _own_systems_vehicle(text: str, known_noun) -> str:
     as a road-user noun it became a second car that beeps and brakes. Where a motor vehicle was brought
     in before with "a" ("A car was waiting at the give way line. The car did nothing, then pulled
     out"), "the car" may be that one, and the text is left as it is; so is a car placed ("the car in
-    front beeped")."""
-
+    front beeped"), and every car of a narrator on a bike, a scooter or foot ("I was cycling home. The
+    car did not detect me": :data:`_NARRATOR_OUT`)."""
     if _NARRATOR_OUT.search(text):
         return text
 
@@ -1037,6 +1041,10 @@ _ANSWER_ENDS = re.compile(
 )
 
 
+#: What :func:`speed_answered` puts before an answer's number ("i was doing 30").
+ANSWER_SAID = "i was doing "
+
+
 def _the_answer(text: str, q: re.Match) -> int | None:
     """Where the answer to the question ``q`` starts: after the label of the next speaker's turn, on
     the same line or the next; None where the question is not itself a labelled turn (a question told
@@ -1076,7 +1084,7 @@ def speed_answered(text: str) -> str:
         before = re.findall(r"[a-z'-]+", answer[: number.start()].lower())
         if any(w not in _ANSWER_FILLERS for w in before):
             continue
-        out += [text[at : start + number.start()], "i was doing ", number.group(0)]
+        out += [text[at : start + number.start()], ANSWER_SAID, number.group(0)]
         at = start + number.end()
         if text.startswith("?", at):  # ("Twenty? Not even.": a guess said as a question, still the answer)
             out.append(",")

@@ -174,7 +174,10 @@ PARTICLES = frozenset(
     {"up", "down", "along", "past", "by", "over", "through", "round", "around", "home", "back", "in", "out", "off",
      "on", "into", "across"}
 )  # fmt: skip
-_PARTICLE_OBJECTS = frozenset({"it", "them", "him", "her"})
+#: What may follow such a particle before how one went: a pronoun ("past it"), or a place's determiner and
+#: one word ("on the roundabout").
+PARTICLE_OBJECTS = frozenset({"it", "them", "him", "her"})
+PLACE_DETERMINERS = frozenset({"the", "a", "this", "that", "my"})
 
 
 def _past_particle(tokens: list[str], k: int) -> int:
@@ -183,9 +186,9 @@ def _past_particle(tokens: list[str], k: int) -> int:
     j = k - (tokens[k] == ",")
     if j > 0 and tokens[j] in PARTICLES:
         return j - 1
-    if j > 1 and tokens[j] in _PARTICLE_OBJECTS and tokens[j - 1] in PARTICLES:
+    if j > 1 and tokens[j] in PARTICLE_OBJECTS and tokens[j - 1] in PARTICLES:
         return j - 2
-    if j > 2 and tokens[j - 1] in ("the", "a", "this", "that", "my") and tokens[j - 2] in PARTICLES:
+    if j > 2 and tokens[j - 1] in PLACE_DETERMINERS and tokens[j - 2] in PARTICLES:
         return j - 3
     return k
 
@@ -677,12 +680,11 @@ def carried_unit(
     """The factor to m/s of a bare speed at ``i`` ("I'm at 50"): the unit of the last speed said with
     one before it, else of the first said after it, else mph on a road of a country that signs miles
     (:func:`miles_country`; ``imperial``: the text measured a length in feet or yards, see
-    :func:`imperial_lengths`), else km/h (the unit of a test engineer
-    who gives none; a motorway says neither: in heavy traffic 60 km/h is as likely there as 60 mph).
-    ``metric``: the text as written was set where km/h is signed (:func:`metric_country` of its tokens
-    before the reader named the ego's own vehicle "the ego": "in the ute"). ``narrated``: the text is
-    told in the first person, whose bare speeds a value only mph limits round to makes mph
-    (:func:`miles_limit_speed`)."""
+    :func:`imperial_lengths`), else km/h (the unit of a test engineer who gives none; a motorway says
+    neither: in heavy traffic 60 km/h is as likely there as 60 mph). ``metric``: the text as written was
+    set where km/h is signed (:func:`metric_country` of its tokens before the reader named the ego's
+    own vehicle "the ego": "in the ute"). ``narrated``: the text is told in the first person, whose bare
+    speeds a value only mph limits round to makes mph (:func:`miles_limit_speed`)."""
     for k in range(i - 1, 0, -1):
         if tokens[k] in V.SPEED_UNITS and tokens[k - 1].replace(".", "", 1).isdigit():
             return V.SPEED_UNITS[tokens[k]]

@@ -114,7 +114,7 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.no_ones_place import without_places_of_no_one
-from vei_scenario.language.normalise import NUMBER_WORDS, normalise, plain_letters, speed_answered
+from vei_scenario.language.normalise import ANSWER_SAID, NUMBER_WORDS, normalise, plain_letters, speed_answered
 from vei_scenario.language.object_participle import participle_phrase
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.phrasal_nouns import phrasal_compound
@@ -1935,7 +1935,7 @@ def read(text: str) -> Reading:
 
 
 #: The words :func:`speed_answered` puts before an answer's number ("i was doing 30").
-_ANSWER_WORDS = frozenset({"i", "was", "doing"})
+_ANSWER_WORDS = frozenset(ANSWER_SAID.split())
 
 
 def _read_answered(text: str) -> Reading:
