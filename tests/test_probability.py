@@ -56,7 +56,7 @@ def test_importance_sampling_agrees_with_monte_carlo_on_rare_failures_and_needs_
     )
     # every contact (the planner's windows 0.03-0.07 s wide, most with the ego standing: the search machinery)
     mc, imp = estimate_probability(
-        scenario, dist, "collision_any", runs=20000, fixed={"CapEnabled": "true"}, seed=5
+        scenario, dist, "collision_any", runs=10000, fixed={"CapEnabled": "true"}, seed=5
     )  # fmt: skip
     assert 0.005 < mc.probability < 0.05  # rare
     assert mc.low <= imp.probability <= mc.high
