@@ -26,8 +26,10 @@ of English verbs and nouns of contact; the rest is read from where words stand i
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from functools import lru_cache
+from threading import Lock
 
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
@@ -2668,13 +2670,55 @@ def outcome_cues(said: str, named: frozenset[str] = frozenset()) -> list[Cue]:
     """The statements of the outcome in ``said`` (the reader's normalised, lowercased tokens joined by
     spaces, contractions as "did not"), in text order; ``named``: the head words the reader named the
     story's road users by ("golf" of "a Golf pulled out"), none of them a thing hit."""
-    return list(_outcome_cues(said, named))
+    return list(_KEPT.cues(said, named))
 
 
-@lru_cache(maxsize=256)
+class _Asked(frozenset):
+    """``named`` that records each word asked of it: the cues depend on ``named`` only through such
+    questions, so cues read with one set hold for another that answers every asked word alike."""
+
+    def __new__(cls, words: frozenset[str]) -> _Asked:
+        probe = super().__new__(cls, words)
+        probe.asked = set()
+        return probe
+
+    def __contains__(self, word: object) -> bool:
+        self.asked.add(word)
+        return super().__contains__(word)
+
+
+class _KeptCues:
+    """The cues of the last texts read, each with the ``named`` set they were read with and the words
+    asked of it. A reading asks for one text's cues up to three times (its outcome, its stated intent,
+    whether the ego evaded), with and without the road users' names; the names rarely change a cue, and
+    reading the cues is a third of reading a text."""
+
+    def __init__(self, size: int = 256) -> None:
+        self._size = size
+        self._kept: OrderedDict[str, list[tuple[frozenset[str], frozenset[str], tuple[Cue, ...]]]] = OrderedDict()
+        self._lock = Lock()
+
+    def cues(self, said: str, named: frozenset[str]) -> tuple[Cue, ...]:
+        with self._lock:
+            for known, asked, cues in self._kept.get(said, ()):
+                if known & asked == named & asked:
+                    self._kept.move_to_end(said)
+                    return cues
+        probe = _Asked(named)
+        cues = _outcome_cues(said, probe)
+        with self._lock:
+            self._kept.setdefault(said, []).append((frozenset(named), frozenset(probe.asked), cues))
+            self._kept.move_to_end(said)
+            while len(self._kept) > self._size:
+                self._kept.popitem(last=False)
+        return cues
+
+
+_KEPT = _KeptCues()
+
+
 def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
-    """``outcome_cues``, kept per text: a reading asks for the same text's cues up to three times (its
-    outcome, its stated intent, whether the ego evaded), and the cues are frozen."""
+    """``outcome_cues`` read afresh (the cues are frozen: :class:`_KeptCues` hands them out again)."""
     tokens = _fields_answered(said.split())
     story = bool({"i", "we", "me", "my", "us", "our"} & set(tokens))
     cues: list[Cue] = []
