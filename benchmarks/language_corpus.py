@@ -99,6 +99,8 @@ FIRST = {
     "language_independent_z46.json": ((50, 50, 19, 45), "measured when written"),
     "language_independent_z47.json": ((50, 50, 4, 46), "measured when written"),
     "language_independent_z48.json": ((50, 50, 15, 43), "measured when written"),
+    "language_independent_z49.json": ((50, 50, 12, 45), "measured when written"),
+    "language_independent_z50.json": ((50, 50, 7, 44), "measured when written"),
 }
 
 

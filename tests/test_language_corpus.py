@@ -86,7 +86,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z17.json": (50, 14),
     ROOT / "tests" / "data" / "language_independent_z18.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z19.json": (50, 5),
-    ROOT / "tests" / "data" / "language_independent_z20.json": (50, 31),
+    ROOT / "tests" / "data" / "language_independent_z20.json": (50, 32),
     ROOT / "tests" / "data" / "language_independent_z21.json": (50, 14),
     ROOT / "tests" / "data" / "language_independent_z22.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z23.json": (50, 13),
@@ -115,6 +115,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z46.json": (50, 20),
     ROOT / "tests" / "data" / "language_independent_z47.json": (50, 7),
     ROOT / "tests" / "data" / "language_independent_z48.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z49.json": (50, 13),
+    ROOT / "tests" / "data" / "language_independent_z50.json": (50, 7),
 }
 
 

@@ -483,25 +483,47 @@ def impact_after_braking(tokens: list[str], i: int) -> bool:
     """Whether the speed at ``i`` is one the ego hits something at ("we struck it at an estimated 12
     mph", "Ego brakes hard, contact at 3 km/h"), said after a braking ("the brakes came on", "I braked"):
     the speed left at impact, which is no speed the ego starts at."""
+    struck = _struck_at(tokens, i)
+    return struck is not None and any(_egos_braking(tokens, b) for b in range(struck))
+
+
+def impact_speed(tokens: list[str], i: int) -> bool:
+    """Whether the speed at ``i`` is one the ego hits a road user at ("I hit him at maybe 15-20",
+    "contact at 3 km/h"), braking said or not: below a speed of the ego said before it ("in the fast
+    lane at 65 ... I couldn't stop and hit him at maybe 15-20"), it is what was left at impact, not the
+    speed the ego goes at. Not a place hit ("hit the roundabout at 40")."""
+    from vei_scenario.language.outcome import names_road_user
+
+    struck = _struck_at(tokens, i)
+    if struck is None:
+        return False
+    at = next(k for k in range(i - 1, -1, -1) if tokens[k] == "at")
+    obj = tokens[struck + 1 : at]
+    return tokens[struck] in IMPACT_NOUNS or obj[:1] in (["it"], ["them"]) or names_road_user(obj)
+
+
+def _struck_at(tokens: list[str], i: int) -> int | None:
+    """Where the contact whose "at" the speed at ``i`` follows is said: the ego's verb of striking
+    ("we struck it at", "I hit him at") or a noun of contact ("contact at"); None if there is none."""
     k = i - 1
     while k > 0 and tokens[k] in _AT_HEDGES and tokens[k] != "at":
         k -= 1
     if tokens[k] != "at":
-        return False
+        return None
     if k >= 1 and tokens[k - 1] in IMPACT_NOUNS:  # ("Ego brakes hard, contact at 3 km/h": the impact's speed)
-        return any(_egos_braking(tokens, b) for b in range(k - 1))
+        return k - 1
     verb = next(
         (v for v in range(k - 1, max(k - 6, -1), -1) if CONTACT & set(lemmas(tokens[v]).get("VERB", (tokens[v],)))),
         None,
     )
     if verb is None or any(t in SENTENCE_END or t == "," for t in tokens[verb + 1 : k]):
-        return False
+        return None
     s = verb - 1
     while s > 0 and tokens[s] in _ADVERBS:
         s -= 1
     if s < 0 or tokens[s] not in _EGO_STRIKER:
-        return False
-    return any(_egos_braking(tokens, b) for b in range(verb))
+        return None
+    return verb
 
 
 _EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})

@@ -2395,6 +2395,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
     counterfactual = "have" in words[:i] and (
         _scoped(words, i, _HYPOTHETICAL, 3) or clause.after_if or _modal_perfect(words, i)
     )
+    counterfactual = counterfactual or _past_condition(words, i)
     if hedged or counterfactual:
         return "hedged"
     if _wondered_at(words, i):
@@ -2403,6 +2404,33 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
         # ("must overtake him and not touch him": the outcome the test wants, no contact)
         return "required" if _required(before) else "denied"
     return "contact"
+
+
+#: Words that may stand between "had" and the verb of a past condition ("if I had actually hit him").
+_BETWEEN_HAD = frozenset(("actually", "really", "ever", "just", "even", "then", "also"))
+
+
+def _past_condition(words: list[str], i: int) -> bool:
+    """Whether the contact at ``i`` is the verb of a condition in the past perfect ("if I had hit the
+    Fiesta", "if the van had clipped him", "had I hit him"): English's third conditional supposes what
+    did not happen, as "would have hit" does. Not "if" after a verb of finding out ("stopped to see if
+    I had hit her"), which asks whether it did."""
+    k = i - 1
+    while k >= 0 and words[k] in _BETWEEN_HAD:
+        k -= 1
+    if k >= 1 and words[k] in SUBJECT_PRONOUNS and words[k - 1] == "had":
+        return k == 1 or words[k - 2] in CLAUSE_BREAKS or words[k - 2] in _BREAK_PUNCT  # ("had I hit him")
+    if k < 1 or words[k] != "had":
+        return False
+    opener = next((j for j in range(k - 1, max(-1, k - 5), -1) if words[j] in ("if", "unless")), None)
+    if opener is None or any(w in _BREAK_PUNCT for w in words[opener:k]):
+        return False
+    asked = opener > 0 and (words[opener - 1] in _SURE or bool(_lemmas(words[opener - 1]) & _FINDING_OUT))
+    return not asked  # ("got out to see if I had hit her": whether it happened, asked)
+
+
+#: Verbs (lemmas) after which "if" asks whether something happened ("to see if I had hit her").
+_FINDING_OUT = frozenset(("see", "check", "know", "ask", "wonder", "tell", "look", "find", "learn"))
 
 
 #: Verbs (lemmas) of knowing or understanding how something came about.

@@ -2067,8 +2067,15 @@ def _read(text: str) -> Reading:
                 ignored.append(m.words)  # ("had it been doing 30 mph, she would have cleared it": no one's)
                 prev = m
                 continue
-            if m.slot == "speed" and ego_speed.impact_after_braking(scanned, m.start):
-                ignored.append(m.words)  # ("I braked but hit him at 10 mph": what was left at impact)
+            if m.slot == "speed" and (
+                ego_speed.impact_after_braking(scanned, m.start)
+                or (
+                    r.ego_speed_mps is not None
+                    and m.value < r.ego_speed_mps
+                    and ego_speed.impact_speed(scanned, m.start)
+                )
+            ):
+                ignored.append(m.words)  # ("I braked but hit him at 10 mph", "at 65 ... hit him at 15": left at impact)
                 prev = m
                 continue
             with_ego = m.slot == "speed" and ego_speed.said_with_the_ego(scanned, m.start, m.end)

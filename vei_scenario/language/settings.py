@@ -247,19 +247,44 @@ _RECORDED_CLOCK = re.compile(
 #: A point in a recording, not a time of day: a clock after "skip to" or "at ... in the video", or one
 #: whose hour is a lone 0 ("0:42", in the reader's tokens "0 : 42"), which no clock of the day is
 #: written as (midnight's hour is "00").
+_ZERO_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b0 : [0-5]\d\b(?! (?:am|pm)\b)")
 _TIMESTAMP = re.compile(
     r"\b(?:skip|skipping|jump|jumping|fast forward|forward|scroll|scrolling) (?:to |at )?"
     r"(?:about |around )?\d{1,2} : [0-5]\d\b"
     r"|\b\d{1,2} : [0-5]\d (?:in|into|of) the (?:video|clip|footage|recording)\b"
-    r"|(?<![\d:] )(?<!\d)\b0 : [0-5]\d\b(?! (?:am|pm)\b)"
+    rf"|{_ZERO_HOUR.pattern}"
 )
+
+
+#: Words of a recording a writer points into by its running time ("at 1:12 in the clip", "helmet cam
+#: footage", "voice note (1:12)"); not "clips my elbow", a "speed cam" or a "video call".
+_RECORDING = re.compile(
+    r"\b(?:(?:the|this|my|that|full|short) clips?|videos?(?! calls?\b)|vids?|footage|recordings?|gopro|overlay"
+    r"|timestamps?|youtube|voice ?(?:notes?|messages?)|voicemails?"
+    r"|(?:dash|helmet|rear|front|bike|body|head) ?-? ?cams?|dashcams?|helmetcams?)\b"
+)
+#: Said right after a clock, its unit or its half of the day ("2:30 in the morning", "9:40 at night").
+_CLOCKS_HALF_AFTER = (
+    r" (?:am|pm|a m|p m|hrs|hours|h|o'clock|in the (?:morning|afternoon|evening|night)|at night|tonight"
+    r"|this (?:morning|afternoon|evening))\b"
+)
+#: A clock with a one-digit hour and no half of the day ("1:12", in the reader's tokens "1 : 12"): how a
+#: point into a recording is written.
+_LOOSE_CLOCK = re.compile(rf"(?<![\d:] )(?<!\d)\b[1-9] : [0-5]\d\b(?!{_CLOCKS_HALF_AFTER}| (?:km/h|mph|m/s|m)\b)")
 
 
 def without_bounds(said: str) -> str:
     """The normalised text without the clocks that bound something else ("since 5 am"), that say
     when a record of it was made ("call logged 14:10"), or that point into a recording ("skip to
-    0:42"): none is the time the scenario happens."""
-    return _TIMESTAMP.sub(" ", _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said)))
+    0:42"): none is the time the scenario happens. A clock with a one-digit hour and no half of the
+    day is such a point too where the text points into its clip at "0:09", or speaks of a recording
+    and has two such clocks ("helmet cam ... at 1:11 ... at 1:12 a Golf pulls out"): a poster who
+    times the clip as they tell it. One such clock in a dash-cam post ("on my dashcam on the way to
+    work at 7:40") may be the time of day, and stays."""
+    loose = _LOOSE_CLOCK.findall(said)
+    points = _ZERO_HOUR.search(said) is not None or (_RECORDING.search(said) is not None and len(loose) > 1)
+    said = _TIMESTAMP.sub(" ", _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said)))
+    return _LOOSE_CLOCK.sub(" ", said) if points else said
 
 
 #: A four-digit 24-hour clock opening a line of a log ("1632 CALLER ADV ...", "0203 Unit 14 adv near
