@@ -104,6 +104,8 @@ NO_CONTACT = "A van came through the red and the car in front did an emergency s
         "Question: if I HAD hit the Fiesta, would the van carry the blame?",
         "My question: had I hit her, who would be at fault?",
         "Question: if the van had actually clipped her, who pays?",
+        "Had it hit her, who would be at fault?",
+        "Question: if I had already hit her, would the van be to blame?",
     ],
 )
 def test_a_contact_supposed_in_a_past_condition_did_not_happen(question):
@@ -127,3 +129,41 @@ def test_a_contact_told_in_the_past_perfect_or_beside_a_condition_stays(text):
 def test_a_place_hit_at_a_speed_is_no_impact_with_a_road_user():
     text = "I was on the motorway at 70, came off at the junction and hit the roundabout at 40 as a car came round."
     assert read(text).ego_speed_mps < 60 * MPH
+
+
+# --- the middle line's other side, and a rolled stop sign ---------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A Range Rover comes round the bend towards me completely on my side of the white line.",
+        "A car came towards me on my side of the centre line, headlights blazing.",
+        "Round the blind bend a tractor came at us on our side of the line.",
+    ],
+)
+def test_coming_towards_the_ego_on_its_side_of_the_middle_line_is_the_wrong_way(text):
+    (a,) = read(text).actors
+    assert a.behaviours[0][0] == "wrong_way"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist rolls the stop sign right in front of me.",
+        "A van rolled through the stop sign in front of me.",
+        "The scooter rider just rolled a stop sign and crossed in front of us.",
+    ],
+)
+def test_rolling_a_stop_sign_is_running_it(text):
+    assert "run_red_light" in [b[0] for a in read(text).actors for b in a.behaviours]
+
+
+@pytest.mark.parametrize(
+    "text, behaviour",
+    [
+        ("A car rolled to a stop at the stop sign.", "keep_going"),
+        ("A van overtook me and pulled in on my side of the line.", "overtake"),
+    ],
+)
+def test_a_stop_rolled_to_and_a_pass_pulled_in_stay(text, behaviour):
+    (a,) = read(text).actors
+    assert a.behaviours[0][0] == behaviour

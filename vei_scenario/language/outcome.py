@@ -2407,7 +2407,7 @@ def _contact_kind(words: list[str], i: int, clause: _Clause, sentence: list[str]
 
 
 #: Words that may stand between "had" and the verb of a past condition ("if I had actually hit him").
-_BETWEEN_HAD = frozenset(("actually", "really", "ever", "just", "even", "then", "also"))
+_BETWEEN_HAD = frozenset(("actually", "really", "ever", "just", "even", "then", "also", "already"))
 
 
 def _past_condition(words: list[str], i: int) -> bool:
@@ -2418,7 +2418,7 @@ def _past_condition(words: list[str], i: int) -> bool:
     k = i - 1
     while k >= 0 and words[k] in _BETWEEN_HAD:
         k -= 1
-    if k >= 1 and words[k] in SUBJECT_PRONOUNS and words[k - 1] == "had":
+    if k >= 1 and (words[k] in SUBJECT_PRONOUNS or words[k] == "it") and words[k - 1] == "had":
         return k == 1 or words[k - 2] in CLAUSE_BREAKS or words[k - 2] in _BREAK_PUNCT  # ("had I hit him")
     if k < 1 or words[k] != "had":
         return False
