@@ -104,7 +104,6 @@ NO_CONTACT = "A van came through the red and the car in front did an emergency s
         "Question: if I HAD hit the Fiesta, would the van carry the blame?",
         "My question: had I hit her, who would be at fault?",
         "Question: if the van had actually clipped her, who pays?",
-        "Had it hit her, who would be at fault?",
         "Question: if I had already hit her, would the van be to blame?",
     ],
 )
@@ -117,6 +116,9 @@ def test_a_contact_supposed_in_a_past_condition_did_not_happen(question):
     [
         "A kid ran out between parked cars. I got out to see if I had hit him and he was holding his leg.",
         "A cyclist pulled out. By the time I braked I had hit him.",
+        "A cyclist pulled out and I hit him. The police asked me if I had already hit him before he fell.",
+        "A cyclist pulled out and I hit him. I honestly can't say if I had already hit him when he fell.",
+        "Parked my car outside work and a reversing lorry hit it. Had it hit by a lorry last year too.",
         "A cyclist pulled out in front of me. I braked but I had already hit him.",
         "A cyclist pulled out and I hit him. If I had braked sooner I would have missed him.",
         "A cyclist pulled out and I hit him. Question: if I had not hit him, would he have fallen anyway?",
@@ -131,20 +133,7 @@ def test_a_place_hit_at_a_speed_is_no_impact_with_a_road_user():
     assert read(text).ego_speed_mps < 60 * MPH
 
 
-# --- the middle line's other side, and a rolled stop sign ---------------------------------------------------
-@pytest.mark.parametrize(
-    "text",
-    [
-        "A Range Rover comes round the bend towards me completely on my side of the white line.",
-        "A car came towards me on my side of the centre line, headlights blazing.",
-        "Round the blind bend a tractor came at us on our side of the line.",
-    ],
-)
-def test_coming_towards_the_ego_on_its_side_of_the_middle_line_is_the_wrong_way(text):
-    (a,) = read(text).actors
-    assert a.behaviours[0][0] == "wrong_way"
-
-
+# --- a rolled stop sign ----------------------------------------------------------------------------------------
 @pytest.mark.parametrize(
     "text",
     [
@@ -157,13 +146,6 @@ def test_rolling_a_stop_sign_is_running_it(text):
     assert "run_red_light" in [b[0] for a in read(text).actors for b in a.behaviours]
 
 
-@pytest.mark.parametrize(
-    "text, behaviour",
-    [
-        ("A car rolled to a stop at the stop sign.", "keep_going"),
-        ("A van overtook me and pulled in on my side of the line.", "overtake"),
-    ],
-)
-def test_a_stop_rolled_to_and_a_pass_pulled_in_stay(text, behaviour):
-    (a,) = read(text).actors
-    assert a.behaviours[0][0] == behaviour
+def test_rolling_to_a_stop_at_the_stop_sign_stays_a_stop_there():
+    (a,) = read("A car rolled to a stop at the stop sign.").actors
+    assert a.behaviours[0][0] == "keep_going"

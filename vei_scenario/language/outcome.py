@@ -2418,19 +2418,20 @@ def _past_condition(words: list[str], i: int) -> bool:
     k = i - 1
     while k >= 0 and words[k] in _BETWEEN_HAD:
         k -= 1
-    if k >= 1 and (words[k] in SUBJECT_PRONOUNS or words[k] == "it") and words[k - 1] == "had":
+    if k >= 1 and words[k] in SUBJECT_PRONOUNS and words[k - 1] == "had":
         return k == 1 or words[k - 2] in CLAUSE_BREAKS or words[k - 2] in _BREAK_PUNCT  # ("had I hit him")
     if k < 1 or words[k] != "had":
         return False
     opener = next((j for j in range(k - 1, max(-1, k - 5), -1) if words[j] in ("if", "unless")), None)
     if opener is None or any(w in _BREAK_PUNCT for w in words[opener:k]):
         return False
-    asked = opener > 0 and (words[opener - 1] in _SURE or bool(_lemmas(words[opener - 1]) & _FINDING_OUT))
+    before = words[max(0, opener - 2) : opener]  # ("to see if", "asked me if", "can't say if")
+    asked = any(w in _SURE or _lemmas(w) & _FINDING_OUT for w in before)
     return not asked  # ("got out to see if I had hit her": whether it happened, asked)
 
 
 #: Verbs (lemmas) after which "if" asks whether something happened ("to see if I had hit her").
-_FINDING_OUT = frozenset(("see", "check", "know", "ask", "wonder", "tell", "look", "find", "learn"))
+_FINDING_OUT = frozenset(("see", "check", "know", "ask", "wonder", "tell", "look", "find", "learn", "say", "remember"))
 
 
 #: Verbs (lemmas) of knowing or understanding how something came about.
