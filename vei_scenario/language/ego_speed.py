@@ -23,6 +23,7 @@ from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.ego import SENTENCE_END
 from vei_scenario.language.function_words import ABOUT, FIRST_PERSON, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.outcome import names_road_user
 from vei_scenario.language.quantities import SPEED_HEADS, is_number
 
 #: Words of going at a speed, before "the <number> limit" ("doing", "sitting at", "keeping to").
@@ -484,7 +485,7 @@ def impact_after_braking(tokens: list[str], i: int) -> bool:
     mph", "Ego brakes hard, contact at 3 km/h"), said after a braking ("the brakes came on", "I braked"):
     the speed left at impact, which is no speed the ego starts at."""
     struck = _struck_at(tokens, i)
-    return struck is not None and any(_egos_braking(tokens, b) for b in range(struck))
+    return struck is not None and any(_egos_braking(tokens, b) for b in range(struck[0]))
 
 
 def impact_speed(tokens: list[str], i: int) -> bool:
@@ -492,26 +493,25 @@ def impact_speed(tokens: list[str], i: int) -> bool:
     "contact at 3 km/h"), braking said or not: below a speed of the ego said before it ("in the fast
     lane at 65 ... I couldn't stop and hit him at maybe 15-20"), it is what was left at impact, not the
     speed the ego goes at. Not a place hit ("hit the roundabout at 40")."""
-    from vei_scenario.language.outcome import names_road_user
-
     struck = _struck_at(tokens, i)
     if struck is None:
         return False
-    at = next(k for k in range(i - 1, -1, -1) if tokens[k] == "at")
-    obj = tokens[struck + 1 : at]
-    return tokens[struck] in IMPACT_NOUNS or obj[:1] in (["it"], ["them"]) or names_road_user(obj)
+    contact, at = struck
+    obj = tokens[contact + 1 : at]
+    return tokens[contact] in IMPACT_NOUNS or obj[:1] in (["it"], ["them"]) or names_road_user(obj)
 
 
-def _struck_at(tokens: list[str], i: int) -> int | None:
-    """Where the contact whose "at" the speed at ``i`` follows is said: the ego's verb of striking
-    ("we struck it at", "I hit him at") or a noun of contact ("contact at"); None if there is none."""
+def _struck_at(tokens: list[str], i: int) -> tuple[int, int] | None:
+    """Where the contact whose "at" the speed at ``i`` follows is said, the ego's verb of striking
+    ("we struck it at", "I hit him at") or a noun of contact ("contact at"), and where that "at" is;
+    None if there is none."""
     k = i - 1
     while k > 0 and tokens[k] in _AT_HEDGES and tokens[k] != "at":
         k -= 1
     if tokens[k] != "at":
         return None
     if k >= 1 and tokens[k - 1] in IMPACT_NOUNS:  # ("Ego brakes hard, contact at 3 km/h": the impact's speed)
-        return k - 1
+        return k - 1, k
     verb = next(
         (v for v in range(k - 1, max(k - 6, -1), -1) if CONTACT & set(lemmas(tokens[v]).get("VERB", (tokens[v],)))),
         None,
@@ -523,7 +523,7 @@ def _struck_at(tokens: list[str], i: int) -> int | None:
         s -= 1
     if s < 0 or tokens[s] not in _EGO_STRIKER:
         return None
-    return verb
+    return verb, k
 
 
 _EGO_WORDS = frozenset({"i", "we", "ego", "my", "our"})

@@ -3189,14 +3189,10 @@ def _read(text: str) -> Reading:
             m.slot == "time" and m.prev not in S.BOUNDS and not S.greeting(m.prev, m.words, m.next_)
         )  # ("since midnight")
     ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
-    clock = (
-        S.dotted_clock(S.without_bounds(said))
-        or stated_clock(S.without_bounds(said))
-        or S.log_clock(text, _vehicle_word)
-    )
-    clock = S.twelve_hour(clock, S.without_bounds(said), [v for k, w, v in said_as if k == "time"]) or S.clock_in_words(
-        S.without_bounds(said), [v for k, w, v in said_as if k == "time"]
-    )
+    clocked = S.without_bounds(said)  # (the text's clocks of the time it happens)
+    parts = [v for k, w, v in said_as if k == "time"]
+    clock = S.dotted_clock(clocked) or stated_clock(clocked) or S.log_clock(text, _vehicle_word)
+    clock = S.twelve_hour(clock, clocked, parts) or S.clock_in_words(clocked, parts)
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     plain = [(w, v) for k, w, v in said_as if k == "weather"]
     weather = S.weather_said([(m.words, m.value, m.prev) for _, ms in clauses for m in ms if m.slot == "weather"])

@@ -244,10 +244,11 @@ _RECORDED_CLOCK = re.compile(
 )
 
 
-#: A point in a recording, not a time of day: a clock after "skip to" or "at ... in the video", or one
-#: whose hour is a lone 0 ("0:42", in the reader's tokens "0 : 42"), which no clock of the day is
-#: written as (midnight's hour is "00").
+#: A clock whose hour is a lone 0 ("0:42", in the reader's tokens "0 : 42"), which no clock of the day is
+#: written as (midnight's hour is "00"): a point in a recording.
 _ZERO_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b0 : [0-5]\d\b(?! (?:am|pm)\b)")
+#: A point in a recording, not a time of day: a clock after "skip to" or "at ... in the video", or one
+#: whose hour is a lone 0.
 _TIMESTAMP = re.compile(
     r"\b(?:skip|skipping|jump|jumping|fast forward|forward|scroll|scrolling) (?:to |at )?"
     r"(?:about |around )?\d{1,2} : [0-5]\d\b"
@@ -281,8 +282,9 @@ def without_bounds(said: str) -> str:
     and has two such clocks ("helmet cam ... at 1:11 ... at 1:12 a Golf pulls out"): a poster who
     times the clip as they tell it. One such clock in a dash-cam post ("on my dashcam on the way to
     work at 7:40") may be the time of day, and stays."""
-    loose = _LOOSE_CLOCK.findall(said)
-    points = _ZERO_HOUR.search(said) is not None or (_RECORDING.search(said) is not None and len(loose) > 1)
+    points = _ZERO_HOUR.search(said) is not None or (
+        _RECORDING.search(said) is not None and len(_LOOSE_CLOCK.findall(said)) > 1
+    )
     said = _TIMESTAMP.sub(" ", _RECORDED_CLOCK.sub(" ", _BOUNDED_CLOCK.sub(" ", said)))
     return _LOOSE_CLOCK.sub(" ", said) if points else said
 
