@@ -117,6 +117,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z48.json": (50, 17),
     ROOT / "tests" / "data" / "language_independent_z49.json": (50, 14),
     ROOT / "tests" / "data" / "language_independent_z50.json": (50, 7),
+    ROOT / "tests" / "data" / "language_independent_z51.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z52.json": (50, 12),
 }
 
 

@@ -501,6 +501,18 @@ def impact_speed(tokens: list[str], i: int) -> bool:
     return tokens[contact] in IMPACT_NOUNS or obj[:1] in (["it"], ["them"]) or names_road_user(obj)
 
 
+def struck_before(tokens: list[str], k: int) -> bool:
+    """Whether a verb of contact stands within a few words before token ``k`` in its clause ("a van hit
+    the back of my car at 15 mph", "a cyclist smashed into us at 30"): the one who strikes the ego there
+    goes at the speed said after it, and the ego, struck, need not ("I was stopped at the lights")."""
+    for j in range(k - 1, max(k - 6, -1), -1):
+        if tokens[j] in SENTENCE_END or tokens[j] == ",":
+            return False
+        if CONTACT & set(lemmas(tokens[j]).get("VERB", (tokens[j],))):
+            return True
+    return False
+
+
 def _struck_at(tokens: list[str], i: int) -> tuple[int, int] | None:
     """Where the contact whose "at" the speed at ``i`` follows is said, the ego's verb of striking
     ("we struck it at", "I hit him at") or a noun of contact ("contact at"), and where that "at" is;

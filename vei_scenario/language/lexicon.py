@@ -39,7 +39,8 @@ SCOOTER_OPERATORS = ("lime", "bird", "tier", "voi", "dott", "bolt", "spin", "bea
 #: forum or a translated statement and keep the word of their own ("a Lkw changed onto my lane", "a guy
 #: on a patinete", "the piéton"): German, French, Spanish, Portuguese, Italian, Dutch, Polish, Czech,
 #: Turkish, Hungarian and South Slavic, Swedish, Norwegian, Danish, Finnish, Russian in Latin letters,
-#: Indonesian and Malay, Vietnamese (a kind's phrase after "xe", vehicle), in plain letters (the reader
+#: Indonesian and Malay, Vietnamese (a kind's phrase after "xe", vehicle), Japanese in Latin letters
+#: ("mamachari"), in plain letters (the reader
 #: drops accents: :func:`normalise.plain_letters`) and in the plural where it is no English plural.
 #: Words that are also English words or names ("rower", "step", "roller", "auto", "kolo", "pullman",
 #: "lori", "mobil") are left out: there they name something else ("a rower on the river", "an auto
@@ -53,6 +54,7 @@ LOANWORDS = {
         "nakladni auto", "autobus", "onibus", "otobus", "autocar", "autocarro", "kamion", "kamiony", "kamioni",
         "kamionok", "lastbil", "lastbilen", "lastbilar", "lastebil", "rekka", "kuorma-auto", "fura", "gruzovik",
         "gruzoviki", "truk", "xe tai", "xe container", "xe khach", "xe buyt", "xe giuong nam",
+        "colectivo", "colectivos", "bondi", "bondis", "pesero", "peseros", "guagua", "guaguas",
     ),
     "van": (
         "kastenwagen", "lieferwagen", "kleintransporter", "camionnette", "camionnettes", "fourgon",
@@ -67,12 +69,14 @@ LOANWORDS = {
         "elektrosamokaty", "elsparkcykel", "elsparkcykeln", "elsparkcyklar", "elsparkcyklarna", "elsparkesykkel",
         "elsparkesykler", "ellobehjul", "sahkopotkulauta", "potkulauta", "elektromos roller", "elektromos rollers",
         "rolleres", "romobil", "romobili", "elektricni romobil", "trotinetka", "skuter listrik", "skuter elektrik",
-        "otoped listrik", "xe scooter dien",
+        "otoped listrik", "xe scooter dien", "patineta", "patinetas", "patineta electrica", "monopatin",
+        "monopatines", "monopatin electrico",
     ),
     "bicycle": (
         "fahrrad", "fahrrader", "radfahrer", "radfahrerin", "radler", "velo", "cycliste", "cyclistes",
         "bicicleta", "bicicletas", "bicicletta", "bici", "ciclista", "ciclistas", "ciclisti", "rowerzysta",
         "rowerzystka", "fiets", "fietser", "fietsers", "cyklista", "bisiklet", "bisikletli", "xe dap",
+        "mamachari", "jitensha",
     ),
     "pedestrian": (
         "fussganger", "fussgangerin", "pieton", "pietonne", "pietons", "peaton", "peatones", "pedone", "pedoni",
@@ -500,6 +504,7 @@ EGO_NOUNS = (
     "our car",
     "my car",
     "host vehicle",
+    "hv",  # (a safety analysis's host vehicle: "HV 80 km/h")
     "host",  # (a fleet or test log's own vehicle: "host 88 km/h")
     "reporting vehicle",  # (a police or fleet report's own vehicle)
     "host car",

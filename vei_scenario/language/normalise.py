@@ -273,8 +273,9 @@ _EGO_AGAIN = re.compile(
     r"\s*,\s*(?:which is |i\.e\. )?the ego\s*(?=,))+"
 )
 #: The other party of a statement: "V2", "Vehicle 2", "Unit 2", "D2" (3, 4 ...).
+#: (Not a version, "spec v3.1", nor a measure, "V2 km/h".)
 _OTHER = re.compile(
-    r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\s*(?:m|km|mph|s)\b)|"
+    r"\b(?:(?:the|a|an)\s+)?(?:(?:vehicle|veh\.?|unit|v|d)\s*-?\s*([2-9])\b(?!\.\d|\s*(?:m|km|mph|s)\b)|"
     r"(?:pov|principal other vehicle)(?:\s*-?\s*([1-9]))?\b|third[- ]party(?:'s)?\s+(?:vehicle|car)\b)"
 )
 #: An apposition after it: "V2, a white Transit van," / "Unit 2, a pedal cyclist,".

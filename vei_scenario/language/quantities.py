@@ -574,6 +574,24 @@ _HOUR_LINKS = frozenset({"this", "last", "in", "the", "on", "that", "yesterday",
 _DOTTED_TIME = re.compile(r"([01]?\d|2[0-3])\.([0-5]\d)")
 
 
+#: The hours said in words, beside which "to" or "past" makes a number minutes ("twenty to seven").
+_HOUR_WORDS = frozenset("one two three four five six seven eight nine ten eleven twelve".split())
+
+
+def _minutes_to_an_hour(tokens: list[str], i: int) -> bool:
+    """Whether the number at ``i`` is minutes to or past an hour ("at twenty to seven", "at 10 past 8"),
+    which the reader reads as a number: a whole number of minutes up to half an hour, then "to" or
+    "past", then an hour (1 to 12, or its word) that no unit or number follows ("at 10 to 12 mph" is a
+    speed; "from 5/12 to 5/16" is dates)."""
+    if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 30 or i + 2 >= len(tokens):
+        return False
+    hour = tokens[i + 2]
+    if tokens[i + 1] not in ("to", "past") or not (hour in _HOUR_WORDS or hour.isdigit() and 1 <= int(hour) <= 12):
+        return False
+    after = tokens[i + 3] if i + 3 < len(tokens) else ""
+    return after not in V.SPEED_UNITS and not is_number(after)
+
+
 def clock_hour(tokens: list[str], i: int) -> bool:
     """Whether the bare number at ``i`` is a time of day: a clock with a dot after a word of time ("at
     approx 3.15", "around 7.30"), or a whole hour, 1 to 12, after a word of time ("at", "around", "by")
@@ -585,6 +603,8 @@ def clock_hour(tokens: list[str], i: int) -> bool:
     if i == 0 or tokens[i - 1] not in _BEFORE_HOUR:
         return False
     if _DOTTED_TIME.fullmatch(tokens[i]):
+        return True
+    if _minutes_to_an_hour(tokens, i):
         return True
     if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 12:
         return False
@@ -1355,7 +1375,7 @@ STILL_WORDS = frozenset(
 )
 #: Words before a still word that make it a state the subject is in, not a stop it makes ("was stopped",
 #: "had stopped", "were still waiting"); a stop said as an event ("I stopped just short") is a reaction.
-_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
+_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently", "completely", "fully", "totally"}
 #: Conjunctions that make a clause the background of what happens ("... while I was queuing").
 _BACKGROUND = frozenset({"while", "whilst", "as", "when"})
 

@@ -173,9 +173,10 @@ _MINUTES = {"quarter": 15, "half": 30, "five": 5, "ten": 10, "twenty": 20, "twen
 _HOUR_WORD = r"(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|1[0-2]|[1-9])"
 #: "quarter past eight", "twenty to seven", "half past ten", and the British "half five" (half past five).
 _NOT_A_CLOCK = r"(?! (?:m|metres|meters|km/h|mph|m/s|seconds|s|hours?|minutes?|cars?|vehicles?)\b)"
+#: (Not numbers within dates, "from 5/12 to 5/16", read "5 12 to 5 16": a number on either side.)
 _CLOCK_IN_WORDS = re.compile(
-    rf"\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
-    rf"{_HOUR_WORD}\b{_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
+    rf"(?<!\d )\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
+    rf"{_HOUR_WORD}\b(?! \d){_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
 )
 #: "six o'clock", "7 o'clock": a whole hour, its half of the day said beside it or told by the part of the day.
 _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
@@ -752,8 +753,9 @@ def bend_named(tokens: list[str]) -> bool:
     return any(t in _BEND_WORDS for t in tokens)
 
 
-#: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself): a lane numbered from the kerb.
-_LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of)")
+#: "lane 3", "lane two" (not "lane 2 of 3", which counts the lanes itself, nor "into the ego lane 6 m
+#: ahead", a distance after the lane): a lane numbered from the kerb.
+_LANE_NUMBER = re.compile(r"\blane " + _N + r"\b(?! of\b| (?:m|metres?|meters?|ft|feet|foot|yards?|yds|km)\b)")
 #: "the middle lane", "the centre lane": a lane with one on each side.
 _MIDDLE_LANE = re.compile(r"\b(?:middle|centre|center) lane\b")
 
