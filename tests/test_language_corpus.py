@@ -69,7 +69,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_w.json": (50, 39),
     ROOT / "tests" / "data" / "language_independent_x.json": (50, 40),
     ROOT / "tests" / "data" / "language_independent_y.json": (50, 36),
-    ROOT / "tests" / "data" / "language_independent_z3.json": (50, 23),
+    ROOT / "tests" / "data" / "language_independent_z3.json": (50, 24),
     ROOT / "tests" / "data" / "language_independent_z4.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z5.json": (50, 27),
     ROOT / "tests" / "data" / "language_independent_z6.json": (50, 28),

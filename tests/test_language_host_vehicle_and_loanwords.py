@@ -1,5 +1,5 @@
 """Safety engineers' shorthand and the English of writers of other languages: "HV" is the host vehicle
-(the ego), a version number is no party's code, an ego said to stand keeps standing when a vehicle near
+(the ego) unless said as a heavy vehicle ("a HV", "the HV in front of me"), a version number is no party's code, an ego said to stand keeps standing when a vehicle near
 it has a speed, a number of minutes to an hour is no speed, dates are no clock, a distance after "lane"
 is no lane number, and the words for e-scooters, buses and bicycles of Latin America and Japan name them.
 
@@ -33,6 +33,18 @@ def test_hv_is_the_ego(text, kph):
     reading = read(text)
     assert reading.ego_speed_mps == pytest.approx(kph * KPH)
     assert len(reading.actors) == 1
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A HV travelling south crossed the centre line and hit my car.",
+        "The HV in front of me braked suddenly and I ran into it at 30 km/h.",
+        "An HV overtook me on the highway and cut in close.",
+    ],
+)
+def test_a_heavy_vehicle_said_as_hv_is_a_lorry(text):
+    assert _kinds(text) == ["truck"]
 
 
 def test_a_version_number_is_no_other_party():
@@ -73,6 +85,28 @@ def test_an_ego_that_goes_keeps_its_speed(text, kph):
     assert read(text).ego_speed_mps == pytest.approx(kph * KPH)
 
 
+@pytest.mark.parametrize(
+    "text, mph",
+    [
+        ("I had stopped at the junction, then pulled out and a van tailgated me at 60 mph.", 60),
+        (
+            "I was stopped at the lights. When they turned green I pulled off and a car next to me at 30 mph "
+            "swerved into my side.",
+            30,
+        ),
+        ("I had not completely stopped when the car behind me at 20 mph hit me.", 20),
+        ("I totally stopped concentrating for a second and a van beside me at 50 mph drifted into my lane.", 50),
+        ("Debris hit the car beside me at 50 mph and it swerved into my lane.", 50),
+    ],
+)
+def test_an_ego_that_stopped_once_or_was_not_said_to_stand_shares_the_speed(text, mph):
+    assert read(text).ego_speed_mps == pytest.approx(mph * MPH)
+
+
+def test_a_stop_of_doing_something_is_no_standstill():
+    assert read("I completely stopped paying attention and rear-ended the car in front of me.").ego_speed_mps != 0.0
+
+
 def test_the_striker_keeps_the_speed_it_strikes_at():
     reading = read("I was stationary at the lights when a van hit the back of my car at 15 mph.")
     assert reading.ego_speed_mps == 0.0
@@ -92,6 +126,23 @@ def test_minutes_to_an_hour_are_a_clock_and_no_speed(text, clock):
     reading = read(text)
     assert reading.time == clock
     assert reading.ego_speed_mps is None
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At quarter past 8 2 cyclists rode out in front of me.", "08:15"),
+        ("On the A406 ten to six a van pulled out in front of me.", "17:50"),
+        ("Sat 12/05/24 quarter past 5 a van pulled out in front of me.", "17:15"),
+    ],
+)
+def test_a_clock_beside_other_numbers_stays(text, clock):
+    assert read(text).time == clock
+
+
+def test_a_count_after_an_hour_word_keeps_the_speed():
+    text = "I drove at 20 past two parked vans when a kid ran out between them."
+    assert read(text).ego_speed_mps == pytest.approx(20 * KPH)
 
 
 def test_a_range_of_speeds_stays_a_speed():

@@ -402,3 +402,42 @@ def test_a_vehicle_ahead_that_stops_does_not_hold_the_ego_short_of_the_junction_
     assert kept["adversaries"][0]["behaviour"]["config"]["delay_s"] == 1.5
     plain = sample_layers(reading({}, "straight", other=False), "built by a test", seed)
     assert plain["adversaries"][0]["behaviour"]["config"].get("delay_s", 1.0) < 5.0
+
+
+@pytest.mark.parametrize("relation", ["roadside_left", "roadside_right"])
+@pytest.mark.parametrize("kind", ["e-scooter", "bicycle"])
+@pytest.mark.parametrize("lanes", [1, 2])
+def test_a_rider_at_the_kerb_who_runs_the_red_rides_through_the_junction(relation, kind, lanes, tmp_path):
+    """A rider at the kerb beside an ego waiting at the lights who rides on through the red rides up
+    past the ego and on through the junction: it rides at its pace, not as a crosser standing at the
+    kerb, and on the kerb lane's edge of the ego's direction, where its route can start (beyond the
+    kerb, or on the far kerb's lane, no chain of roads leads it through the junction)."""
+    from vei_scenario.language.corpus_check import _ego_frame
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec(kind, relation, None, None, [("run_red_light", {}, None, "sequence")])
+    layers = sample_layers(Reading(map_kind="crossroad", lanes=lanes, ego_speed_mps=0.0, actors=[rider]), "test", 0)
+    assert layers["adversaries"][0]["spawn"]["relation"] == relation
+    result = play_layers(layers, tmp_path)
+    along, _ = _ego_frame(result, "Adversary1")
+    assert along[0] < 0.0  # (it comes up from behind the waiting ego, and passes it)
+    assert along[-1] > float(layers["ego"]["distance_m"]) + 14.0  # (through the junction, beyond its middle)
+    if lanes == 1:  # (in the one lane of its way it passes right by the ego's path; with two, a lane apart)
+        assert played_problems(result, layers) == []
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize("ego_speed", [22.0, 27.0, 33.0])
+def test_a_road_user_from_behind_a_fast_ego_far_before_its_junction_starts_on_the_road(seed, ego_speed, tmp_path):
+    """An ego set far before its junction (fast, with an overtaker to give room) starts near its road's
+    start: a road user said to come from behind starts as far behind as the road allows, on it."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    moves = [("overtake", {}, None, "sequence"), ("cut_in", {}, None, "sequence")]
+    lorry = ActorSpec("truck", "behind", None, None, moves)
+    reading = Reading(map_kind="crossroad", lanes=3, ego_speed_mps=ego_speed, actors=[lorry])
+    layers = sample_layers(reading, "test", seed)
+    written = write_scenario(layers, "scenario")
+    assert written.xosc

@@ -502,14 +502,15 @@ def impact_speed(tokens: list[str], i: int) -> bool:
 
 
 def struck_before(tokens: list[str], k: int) -> bool:
-    """Whether a verb of contact stands within a few words before token ``k`` in its clause ("a van hit
-    the back of my car at 15 mph", "a cyclist smashed into us at 30"): the one who strikes the ego there
-    goes at the speed said after it, and the ego, struck, need not ("I was stopped at the lights")."""
+    """Whether a verb of contact with the ego named at token ``k`` stands within a few words before it in
+    its clause ("a van hit the back of my car at 15 mph", "a cyclist smashed into us at 30"; not "debris
+    hit the car beside me", another road user struck): the one who strikes the ego there goes at the
+    speed said after it, and the ego, struck, need not ("I was stopped at the lights")."""
     for j in range(k - 1, max(k - 6, -1), -1):
         if tokens[j] in SENTENCE_END or tokens[j] == ",":
             return False
         if CONTACT & set(lemmas(tokens[j]).get("VERB", (tokens[j],))):
-            return True
+            return not names_road_user(tokens[j + 1 : k])  # (not "debris hit the car beside me at 50 mph")
     return False
 
 

@@ -1093,10 +1093,26 @@ def speed_answered(text: str) -> str:
     return "".join(out) + text[at:]
 
 
+#: "HV" is a host vehicle (the ego) in a safety analysis and a heavy vehicle (a lorry) in an Australian or
+#: New Zealand crash report: the lorry where said with "a"/"an", in the plural, or placed by the narrator
+#: ("the HV in front of me braked").
+_HEAVY_VEHICLE = re.compile(
+    r"\b(?:an?\s+hv|hvs)\b|\bhv\s+(?:in front of|ahead of|behind|beside|next to|alongside)\s+(?:me|us|my|our)\b"
+)
+
+
+def _heavy_vehicles(text: str) -> str:
+    """``text`` with "HV" said as a heavy vehicle (:data:`_HEAVY_VEHICLE`) written as a lorry, everywhere in it."""
+    if not _HEAVY_VEHICLE.search(text):
+        return text
+    return re.sub(r"\bhv(s?)\b", r"lorry\1", text).replace("lorrys", "lorries")
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
+    text = _heavy_vehicles(text)
     # a list (bullets, numbered steps, one item a line): each item its own sentence
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)

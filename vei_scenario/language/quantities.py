@@ -578,17 +578,24 @@ _DOTTED_TIME = re.compile(r"([01]?\d|2[0-3])\.([0-5]\d)")
 _HOUR_WORDS = frozenset("one two three four five six seven eight nine ten eleven twelve".split())
 
 
+#: Words ending in "s" that are no plural noun after an hour ("at ten past two this morning", "as").
+_NOT_PLURAL = frozenset({"as", "is", "was", "this", "his", "its", "us", "yes", "whereas", "has"})
+
+
 def _minutes_to_an_hour(tokens: list[str], i: int) -> bool:
     """Whether the number at ``i`` is minutes to or past an hour ("at twenty to seven", "at 10 past 8"),
     which the reader reads as a number: a whole number of minutes up to half an hour, then "to" or
-    "past", then an hour (1 to 12, or its word) that no unit or number follows ("at 10 to 12 mph" is a
-    speed; "from 5/12 to 5/16" is dates)."""
+    "past", then an hour (1 to 12, or its word) that no unit, number or counted noun follows ("at 10 to
+    12 mph" is a speed; "from 5/12 to 5/16" is dates; "at 20 past two parked vans" counts vans)."""
     if not tokens[i].isdigit() or not 1 <= int(tokens[i]) <= 30 or i + 2 >= len(tokens):
         return False
     hour = tokens[i + 2]
     if tokens[i + 1] not in ("to", "past") or not (hour in _HOUR_WORDS or hour.isdigit() and 1 <= int(hour) <= 12):
         return False
     after = tokens[i + 3] if i + 3 < len(tokens) else ""
+    counted = after.isalpha() and after.endswith("s") and after not in _NOT_PLURAL
+    if after in ("parked", "stationary", "stopped") or counted:
+        return False  # ("at 20 past two parked vans", "at 30 past two cars": a count of what is passed)
     return after not in V.SPEED_UNITS and not is_number(after)
 
 
@@ -1375,7 +1382,9 @@ STILL_WORDS = frozenset(
 )
 #: Words before a still word that make it a state the subject is in, not a stop it makes ("was stopped",
 #: "had stopped", "were still waiting"); a stop said as an event ("I stopped just short") is a reaction.
-_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently", "completely", "fully", "totally"}
+_STATE_BEFORE = _AUXILIARIES | {"had", "have", "has", "already", "patiently"}
+#: Adverbs of degree between an auxiliary and a still word ("was completely stopped", "had fully stopped").
+_DEGREE = frozenset({"completely", "fully", "totally"})
 #: Conjunctions that make a clause the background of what happens ("... while I was queuing").
 _BACKGROUND = frozenset({"while", "whilst", "as", "when"})
 
@@ -1409,12 +1418,25 @@ def _stop_as_state(m) -> bool:
     return first in STILL_WORDS or first in _STANDING or (m.prev in _PERFECT and not first.endswith("ing"))
 
 
-def ego_at_rest(clauses) -> bool:
+def _stopped_fully(m, tokens: list[str] | None) -> bool:
+    """Whether the still word ``m`` follows a degree adverb after an auxiliary ("my car was completely
+    stopped", "I had fully stopped"): a state. Not denied ("had not completely stopped": still rolling),
+    nor a stop of doing something ("I completely stopped paying attention")."""
+    if tokens is None or m.prev not in _DEGREE or m.start < 2:
+        return False
+    aux = tokens[m.start - 2]
+    if aux not in _STATE_BEFORE or (m.start >= 3 and tokens[m.start - 3] in ("not", "never", "n't")):
+        return False
+    return not (m.end < len(tokens) and tokens[m.end].endswith("ing"))
+
+
+def ego_at_rest(clauses, tokens: list[str] | None = None) -> bool:
     """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
     ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
     anything or as the background of what they do ("... while I was queuing"). Why: the one struck
     while waiting is a common report, and a stop the ego makes in reply ("... and I was stopped just
-    in time") is no start at rest. ``clauses``: the reader's (link, mentions)."""
+    in time") is no start at rest. ``clauses``: the reader's (link, mentions); ``tokens``: the words they
+    index."""
     acted = other = False
     subject = None  # (the road user named last as a subject: whom "it" says again)
     for _, mentions in clauses:
@@ -1446,7 +1468,7 @@ def ego_at_rest(clauses) -> bool:
             if (
                 ego.slot == "actor"
                 and ego.value == "ego"
-                and (m.prev in _STATE_BEFORE or denied or _verbless_state(ego, m))
+                and (m.prev in _STATE_BEFORE or denied or _verbless_state(ego, m) or _stopped_fully(m, tokens))
             ):
                 if not acted or ego.prev in _BACKGROUND:
                     return True

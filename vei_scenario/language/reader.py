@@ -1971,7 +1971,7 @@ def _read(text: str) -> Reading:
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = off_a_place.onto_the_road_off_a_place(clauses, scanned, FUNCTION_WORDS)  # ("shot off the promenade")
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
-    shared_only = False  # (the ego's speed is one it shares with a vehicle beside it, not its own)
+    shared_behind = False  # (the ego's speed is one it shares with a vehicle said behind it, not its own)
     clauses = lane_moves.before_as_a_place(clauses, scanned)  # ("the bus before ego car": in front of it)
     clauses = sides.narrator_lane(sides.relate_headings(clauses))
     clauses = sides.ego_follows(sides.numbered_lanes(clauses, sides.drives_on_left(scanned, text)))
@@ -2719,7 +2719,9 @@ def _read(text: str) -> Reading:
                         who.said.add("ego_behind")  # ("a bus in the left lane in front of us": the ego's lane)
                     if of_both:
                         r.ego_speed_mps = m.value
-                        shared_only = True
+                        # ("a lorry coming up behind me at 20 mph": a follower's speed, which an ego said
+                        # to wait at the lights does not share)
+                        shared_behind = (prev.slot == "relation" and prev.value == "behind") or prev.prev == "behind"
             prev = m
         for a, i in added:
             name, cfg, _, lk = a.behaviours[i]
@@ -2797,15 +2799,14 @@ def _read(text: str) -> Reading:
         a.lane_side = sides.lane_of_the_followed(a.lane_side, "ego_behind" in a.said and not a.toward, r.ego_relation)
     if both_with_ego and r.ego_speed_mps is None and actors and actors[0].speed_mps is not None:
         r.ego_speed_mps = actors[0].speed_mps  # (the speed said of both)
-    if (r.ego_speed_mps is None or shared_only) and Q.ego_at_rest(clauses):
-        # ("I was sat at the lights when ..."): the ego stands still, whatever speed a vehicle near it has
-        # ("I was stopped at the red light when a van coming behind me at 15 mph hit my car") or a
-        # follower keeps ("a lorry sat on my bumper" is a follower's speed for an ego said to go)
-        r.ego_speed_mps = 0.0
     if r.ego_speed_mps is None:
         r.ego_speed_mps = ego_speed.kept_by_a_follower(actors)  # ("a van tailgated me at 60 mph")
     if r.ego_speed_mps is None:
         r.ego_speed_mps = set_by_the_ego  # (read past with what the ego is let do)
+    if (r.ego_speed_mps is None or shared_behind) and Q.ego_at_rest(clauses, scanned):
+        # ("I was sat at the lights when ..."): the ego stands still, whatever speed a vehicle said next
+        # to it has ("I was stopped at the red light when a van coming behind me at 15 mph hit my car")
+        r.ego_speed_mps = 0.0
     if r.ego_speed_mps is None:
         r.ego_speed_mps = ego_speed.of_traffic(scanned)  # ("Cars are usually doing 20 mph here")
     ignored += unplaced

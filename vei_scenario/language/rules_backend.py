@@ -249,6 +249,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     if kind == "crossroad":
         stop_beyond_junction(ego, adversaries, stops_open)
     hold_spawns_in_range(adversaries)
+    keep_on_the_egos_road(ego, adversaries, kind, lanes)
     layers = {
         "format": "vei-layers/1",
         "description": text,
@@ -753,6 +754,28 @@ def hold_spawns_in_range(adversaries: list[dict]) -> None:
             spawn["longitudinal_m"] = _within_range(float(spawn["longitudinal_m"]))
 
 
+#: How far behind an ego waiting at the lights a rider at the kerb who rides on through the red starts (m).
+RIDES_UP_BEHIND_M = 8.0
+#: Relations whose spawn lies on the ego's own road, at ``longitudinal_m`` along it from the ego.
+_ON_THE_EGOS_ROAD = frozenset(("ahead", "behind", "left", "right", "oncoming", "roadside_left", "roadside_right"))
+#: How far within either end of the ego's road such a spawn is kept (m).
+_ROAD_END_MARGIN_M = 2.0
+
+
+def keep_on_the_egos_road(ego: dict, adversaries: list[dict], kind: str, lanes: int) -> None:
+    """Every spawn on the ego's road within that road: where the ego starts near the road's start (a
+    fast ego set far before its junction so that an overtaker has room to pass), a road user said to
+    come from behind starts as far behind as the road allows, not before the road's start, where no
+    scenario can be written. Why here: the ego's start is settled by the steps before this one."""
+    info = layout({"kind": kind, "lanes_per_direction": lanes})
+    ego_s = ego_pose(info, ego).s
+    low, high = _ROAD_END_MARGIN_M - ego_s, info.ego_road_length_m - _ROAD_END_MARGIN_M - ego_s
+    for adv in adversaries:
+        spawn = adv["spawn"]
+        if spawn["relation"] in _ON_THE_EGOS_ROAD and "longitudinal_m" in spawn:
+            spawn["longitudinal_m"] = round(min(max(float(spawn["longitudinal_m"]), low), high), 3)
+
+
 def place_adversary(*args, **kwargs) -> tuple[dict, float]:
     """:func:`_place_adversary`, its spawn held within what the layers can hold (-150 .. 250 m:
     a timing that asks for more, at a speed near the layers' limit, starts as far as they allow)."""
@@ -847,6 +870,13 @@ def _place_adversary(
         return spawn, round(v, 3)
     if relation in ("junction_left", "junction_right"):
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
+    elif relation.startswith("roadside") and behaviour_name == "run_red_light":
+        # a rider at the kerb of the ego's road that rides on through the red ("filtered past me and
+        # went through on red"): not a crosser; it rides along the kerb at its pace, from where the text
+        # puts it, else just behind an ego waiting at the lights (it passes it) or ahead of one that goes
+        out_speed = _pace(kind, speed) if vulnerable(kind) else out_speed
+        lon = distance_m if distance_m is not None else (-RIDES_UP_BEHIND_M if ego_speed < 0.5 else ego_speed * 2.0)
+        spawn["longitudinal_m"] = round(lon, 3)
     elif relation.startswith("roadside"):
         cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
         lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)

@@ -173,11 +173,12 @@ _MINUTES = {"quarter": 15, "half": 30, "five": 5, "ten": 10, "twenty": 20, "twen
 _HOUR_WORD = r"(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|1[0-2]|[1-9])"
 #: "quarter past eight", "twenty to seven", "half past ten", and the British "half five" (half past five).
 _NOT_A_CLOCK = r"(?! (?:m|metres|meters|km/h|mph|m/s|seconds|s|hours?|minutes?|cars?|vehicles?)\b)"
-#: (Not numbers within dates, "from 5/12 to 5/16", read "5 12 to 5 16": a number on either side.)
 _CLOCK_IN_WORDS = re.compile(
-    rf"(?<!\d )\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
-    rf"{_HOUR_WORD}\b(?! \d){_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
+    rf"\b(?:a )?(quarter|half|twenty[- ]five|twenty|ten|five|[1-5]?\d(?: minutes)?) (past|after|to|before) "
+    rf"{_HOUR_WORD}\b{_NOT_A_CLOCK}|\bhalf {_HOUR_WORD}\b{_NOT_A_CLOCK}"
 )
+#: Two dates of a span written with slashes ("from 5/12 to 5/16", read "5 12 to 5 16"): no "12 to 5" o'clock.
+_DATE_SPAN = re.compile(r"\b\d{1,2} \d{1,2} (?:to|till|until) \d{1,2} \d{1,2}\b")
 #: "six o'clock", "7 o'clock": a whole hour, its half of the day said beside it or told by the part of the day.
 _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: Said beside a clock in words, the half of the day it is in.
@@ -191,6 +192,7 @@ def clock_in_words(said: str, parts: list[str]) -> str | None:
     "half five": "05:30" or "17:30"), else None. Words give no half of the day: it is the one said
     ("in the evening", "pm"), else the one that lies within the part of the day said (``parts``: the
     lexicon's clocks of the parts said), else the afternoon for the first hours and the morning after."""
+    said = _DATE_SPAN.sub(" ", said)
     m = _CLOCK_IN_WORDS.search(said)
     oclock = _OCLOCK.search(said) if m is None else None
     if m is None and oclock is None:
