@@ -1,7 +1,8 @@
 """Safety engineers' shorthand and the English of writers of other languages: "HV" is the host vehicle
-(the ego) unless said as a heavy vehicle ("a HV", "the HV in front of me"), a version number is no party's code, an ego said to stand keeps standing when a vehicle near
-it has a speed, a number of minutes to an hour is no speed, dates are no clock, a distance after "lane"
-is no lane number, and the words for e-scooters, buses and bicycles of Latin America and Japan name them.
+(the ego) unless said as a heavy vehicle ("a HV", "the HV in front of me"), a version number is no
+party's code, an ego said to stand keeps standing when a vehicle near it has a speed, a number of
+minutes to an hour is no speed, dates are no clock, a distance after "lane" is no lane number, and the
+words for e-scooters, buses and bicycles of Latin America and Japan name them.
 
 Every wording here is written for these tests (none is from a corpus). Each rule has wordings that must
 read and near misses that look alike but must not."""

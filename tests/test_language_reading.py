@@ -305,3 +305,30 @@ def test_the_layers_carry_none_of_the_readers_own_marks(text):
     for seed in (0, 1):
         written = json.dumps(layers_from_text(text, seed=seed)["adversaries"])
         assert '"_' not in written
+
+
+def test_a_scenario_the_player_refuses_fails_alone_with_its_files_kept(tmp_path, capsys, monkeypatch):
+    """A generated scenario that is written but cannot be played fails by itself, as one that cannot be
+    written does: the batch goes on, and its folder keeps the files to look at and the reason names the
+    scenario's own file, not the batch's temporary copy of it."""
+    from vei_scenario.errors import VeiInputError
+    from vei_scenario.language import describe
+
+    real, calls = describe.evaluate, []
+
+    def refuse_first(xosc, rate_hz):
+        calls.append(xosc)
+        if len(calls) == 1:
+            raise VeiInputError(xosc, "line 240", "no chain of roads joins the route's waypoints")
+        return real(xosc, rate_hz)
+
+    monkeypatch.setattr(describe, "evaluate", refuse_first)
+    text = "A cyclist pulls out of a side road on the left in front of the ego."
+    assert main(["describe", text, "-o", str(tmp_path / "out"), "--count", "2", "--jobs", "1"]) == 0
+    doc = json.loads((tmp_path / "out" / "batch.json").read_text())
+    first, second = doc["scenarios"]
+    reason = "could not be played: scenario.xosc: line 240: no chain of roads joins the route's waypoints"
+    assert first["error"] == reason
+    assert second["error"] is None
+    assert {p.name for p in (tmp_path / "out" / "scenario_000").iterdir()} >= {"scenario.xosc", "layers.json"}
+    assert "vei-describe-" not in capsys.readouterr().err

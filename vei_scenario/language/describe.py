@@ -50,6 +50,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
     or the episodes are spent."""
     episodes: list[dict] = []
     intent = layers.get("intent", "unspecified")
+    kept = (layers, None)  # (the layers and files of the last episode played, which a failed step falls back to)
     with tempfile.TemporaryDirectory(prefix="vei-describe-") as tmp:
         for episode in range(MAX_EPISODES if refine else 1):
             try:
@@ -58,11 +59,21 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
                 if episode == 0:
                     text = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
                     return ScenarioRecord(index, layers, {"layers.json": text}, {}, [], f"{type(exc).__name__}: {exc}")
-                break  # (a refinement step that cannot be placed: the last episode that could stands)
+                layers, written = kept  # (a refinement step that cannot be placed: the last that could stands)
+                break
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
             (Path(tmp) / f"{SCENARIO_STEM}.xodr").write_bytes(written.xodr)
             xosc.write_bytes(written.xosc)
-            outcome = evaluate(xosc, float(layers.get("rate_hz", DEFAULT_RATE_HZ)))
+            try:
+                outcome = evaluate(xosc, float(layers.get("rate_hz", DEFAULT_RATE_HZ)))
+            except VeiInputError as exc:  # (one the player cannot play fails with its files kept; the batch goes on)
+                if episode == 0:
+                    where = f"{exc.where}: " if exc.where else ""
+                    reason = f"could not be played: {SCENARIO_STEM}.xosc: {where}{exc.reason}"
+                    return ScenarioRecord(index, layers, _files(written, layers), {}, [], reason)
+                layers, written = kept  # (a refinement step that cannot be played: the last that could stands)
+                break
+            kept = (layers, written)
             met, direction = intent_met(intent, outcome)
             episodes.append(
                 {
@@ -86,9 +97,14 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             if met or not refine or episode == MAX_EPISODES - 1:
                 break
             layers = adjust(layers, direction, episode, episodes)
+    return ScenarioRecord(index, layers, _files(written, layers), outcome, episodes)
+
+
+def _files(written, layers: dict) -> dict[str, bytes]:
+    """A scenario's files by name: its OpenSCENARIO and OpenDRIVE, and the layers they were written from."""
     files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
     files["layers.json"] = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
-    return ScenarioRecord(index, layers, files, outcome, episodes)
+    return files
 
 
 def _work(args) -> ScenarioRecord:
