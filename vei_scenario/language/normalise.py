@@ -1113,6 +1113,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = _heavy_vehicles(text)
+    # "ran his red", "passing their red light": the runner's own signal is the red light, said as any is
+    text = re.sub(r"\b(?:his|her|their|its)\s+(?=red\b)", "the ", text)
     # a list (bullets, numbered steps, one item a line): each item its own sentence
     text = re.sub(r"^\s*(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+", "", text)
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)

@@ -3252,9 +3252,9 @@ def _vehicle_word(word: str) -> bool:
 
 def _one_act_once(spec: ActorSpec) -> list:
     """Its behaviours with one act said twice read once: a walker or rider's crossing said again as
-    coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), and
-    a hard stop said again as "came to a complete stop", a crossing after giving way (behind the ego:
-    give_way plays it so), a cut across the ego's lane to turn said as a
+    coming "into the ego's path" (a cut-in is a lane change, which they do not make after crossing), a
+    hard stop said again as "came to a complete stop", a run of the red said again, a crossing after
+    giving way (behind the ego: give_way plays it so), a cut across the ego's lane to turn said as a
     cut-in first."""
     out: list = []
     for b in spec.behaviours:
@@ -3262,6 +3262,8 @@ def _one_act_once(spec: ActorSpec) -> list:
         if prev == "cross_in_front" and b[0] == "cut_in" and spec.kind in VULNERABLE:
             continue
         if prev == "sudden_stop" and b[0] == "stop":
+            continue
+        if prev == b[0] == "run_red_light":  # ("ignores the red signal and shoots across": one run of one junction)
             continue
         if prev == "give_way" and b[0] == "cross_in_front":  # (giving way, it crosses behind the ego: one act)
             continue
