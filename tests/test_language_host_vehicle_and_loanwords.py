@@ -211,27 +211,3 @@ def test_a_runners_own_red_is_the_red_light(text):
 def test_a_red_car_stays_a_car():
     (actor,) = read("A woman in her red car pulled out of a side road on my left.").actors
     assert actor.kind == "car" and [b[0] for b in actor.behaviours] == ["turn_into"]
-
-
-# --- a test's requirement of no emergency response is a safe pass ------------------------------------------------
-@pytest.mark.parametrize(
-    "text",
-    [
-        "TC-12: ego at 50 km/h behind a cyclist at 20 km/h. Pass criteria: no FCW, no AEB intervention.",
-        "The SuT shall follow a van braking gently to 30 km/h without FCW or takeover request.",
-        "REQ-88: The FCW shall not issue a warning for a jogger running along the verge on the right, HV 50 km/h.",
-    ],
-)
-def test_a_requirement_of_no_emergency_response_is_a_safe_pass(text):
-    assert read(text).intent == "safe"
-
-
-@pytest.mark.parametrize(
-    "text",
-    [
-        "A cyclist pulled out in front of me, no FCW, I braked hard and stopped a foot short.",
-        "The AEB shall brake when a car pulls out without warning 20 m ahead.",
-    ],
-)
-def test_a_missing_warning_in_a_report_or_a_sudden_move_is_no_safe_pass(text):
-    assert read(text).intent != "safe"

@@ -69,7 +69,8 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
             except VeiInputError as exc:  # (one the player cannot play fails with its files kept; the batch goes on)
                 if episode == 0:
                     where = f"{exc.where}: " if exc.where else ""
-                    reason = f"could not be played: {SCENARIO_STEM}.xosc: {where}{exc.reason}"
+                    named = Path(exc.file).name if exc.file else f"{SCENARIO_STEM}.xosc"  # (its road file, maybe)
+                    reason = f"could not be played: {named}: {where}{exc.reason}"
                     return ScenarioRecord(index, layers, _files(written, layers), {}, [], reason)
                 layers, written = kept  # (a refinement step that cannot be played: the last that could stands)
                 break

@@ -274,26 +274,6 @@ def _predicted(words: list[str], i: int) -> bool:
     return future and (bool(set(words[:i]) & _INDEFINITE) or one_day)
 
 
-#: What a driver-assistance function does in an emergency, which a test's requirement denies when the
-#: situation is to be handled with nothing of it ("no FCW", "without AEB intervention", "no takeover").
-_EMERGENCY_RESPONSES = frozenset(("fcw", "intervention", "interventions", "takeover", "warning", "warnings"))
-#: Words that frame a text as a test's requirement or pass criteria.
-_REQUIREMENT = frozenset(("shall", "requirement", "requirements", "criteria", "criterion"))
-
-
-def _no_response_required(words: list[str], i: int, sentences: list[list[str]]) -> bool:
-    """Whether ``words[i]`` is an emergency response of the function under test denied in a text that
-    states a test's requirement ("Requirement: no FCW, no AEB intervention", "The SuT shall follow at
-    1.5 s without FCW", "shall not issue a warning"): the test asks for a situation handled with room
-    to spare, a safe pass. Not "without warning" (of how someone else moved), nor in a report of what
-    happened, where a warning that did not come says nothing of how close it was."""
-    if words[i] not in _EMERGENCY_RESPONSES or not _denied_before(words, i):
-        return False
-    if words[i].startswith("warning") and i > 0 and words[i - 1] == "without":
-        return False  # ("a car pulls out without warning")
-    return any(_REQUIREMENT & set(ws) for ws in sentences)
-
-
 def _denied_before(words: list[str], i: int) -> bool:
     """Whether what stands at ``i`` is denied in its clause: an odd count of negators and denying
     verbs before it ("no contact", "did not make contact", "managed to avoid hitting"); two cancel
@@ -2937,8 +2917,6 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
             hedge = w in HEDGES or (w == "just" and i > 0 and words[i - 1] == "only")
             if hedge and (_hedged_act(words, i) or _hedge_after_escape(words, i)):
                 add("hedged")
-            if _no_response_required(words, i, raw or [words]):
-                add("safe")  # ("Pass criteria: no FCW, no AEB intervention": the test passes with nothing needed)
             if w == "harm" and _denied_before(words, i):
                 add("unharmed")  # ("no harm done": how it ended, not how close it was)
             elif w in _TROUBLE and words[max(0, i - 2) : i] == ["do", "not"]:

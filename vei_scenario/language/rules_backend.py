@@ -872,8 +872,9 @@ def _place_adversary(
         spawn["longitudinal_m"] = round(_junction_spawn(ego, lanes, relation, out_speed, ego_speed, cfg), 3)
     elif relation.startswith("roadside") and behaviour_name == "run_red_light":
         # a rider at the kerb of the ego's road that rides on through the red ("filtered past me and
-        # went through on red"): not a crosser; it rides along the kerb at its pace, from where the text
-        # puts it, else just behind an ego waiting at the lights (it passes it) or ahead of one that goes
+        # went through on red"): not a crosser; it rides along the kerb at its speed (as read or drawn,
+        # else its kind's pace), from where the text puts it, else just behind an ego waiting at the
+        # lights (it passes it) or ahead of one that goes
         out_speed = _pace(kind, speed) if vulnerable(kind) else out_speed
         lon = distance_m if distance_m is not None else (-RIDES_UP_BEHIND_M if ego_speed < 0.5 else ego_speed * 2.0)
         spawn["longitudinal_m"] = round(lon, 3)

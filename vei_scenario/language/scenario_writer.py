@@ -382,9 +382,9 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         # (one whose first move is a swerve swerves from the kerb lane's edge, and crosses from that lane
         # after it, if it does; one that crosses first crosses from the kerb)
         swerves = does[0] in SWERVES_FROM_KERB or (set(does) & set(SWERVES_FROM_KERB) and "cross_in_front" not in does)
-        # (a rider at the kerb that runs the red rides on along the road through the junction: from the kerb
-        # lane's edge too, as its route must start on a lane of its way)
-        rides_through = "run_red_light" in does and "cross_in_front" not in does
+        # (a rider at the kerb whose first act is running the red rides on along the road through the
+        # junction, as placement has it: from the kerb lane's edge too, as its route must start on a lane of its way)
+        rides_through = does[0] == "run_red_light"
         if at_kerb and (swerves or rides_through):
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
