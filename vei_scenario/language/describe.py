@@ -57,8 +57,7 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
                 written = write_scenario(layers, SCENARIO_STEM)
             except ValueError as exc:  # (PlacementError too): this scenario fails, the batch goes on
                 if episode == 0:
-                    text = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
-                    return ScenarioRecord(index, layers, {"layers.json": text}, {}, [], f"{type(exc).__name__}: {exc}")
+                    return ScenarioRecord(index, layers, _files(None, layers), {}, [], f"{type(exc).__name__}: {exc}")
                 layers, written = kept  # (a refinement step that cannot be placed: the last that could stands)
                 break
             xosc = Path(tmp) / f"{SCENARIO_STEM}.xosc"
@@ -102,8 +101,9 @@ def run_one(layers: dict, index: int, refine: bool) -> ScenarioRecord:
 
 
 def _files(written, layers: dict) -> dict[str, bytes]:
-    """A scenario's files by name: its OpenSCENARIO and OpenDRIVE, and the layers they were written from."""
-    files = {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
+    """A scenario's files by name: its OpenSCENARIO and OpenDRIVE (none where it could not be written:
+    ``written`` None), and the layers they were written from."""
+    files = {} if written is None else {f"{SCENARIO_STEM}.xosc": written.xosc, f"{SCENARIO_STEM}.xodr": written.xodr}
     files["layers.json"] = (json_text(layers, indent=2, sort_keys=False) + "\n").encode()
     return files
 

@@ -506,12 +506,19 @@ def struck_before(tokens: list[str], k: int) -> bool:
     its clause ("a van hit the back of my car at 15 mph", "a cyclist smashed into us at 30"; not "debris
     hit the car beside me", another road user struck): the one who strikes the ego there goes at the
     speed said after it, and the ego, struck, need not ("I was stopped at the lights")."""
+    verb = _contact_before(tokens, k)
+    return verb is not None and not names_road_user(tokens[verb + 1 : k])  # (not "debris hit the car beside me")
+
+
+def _contact_before(tokens: list[str], k: int) -> int | None:
+    """Where the nearest verb of contact stands within five words before token ``k``, with no sentence end
+    or comma between them; None where there is none."""
     for j in range(k - 1, max(k - 6, -1), -1):
         if tokens[j] in SENTENCE_END or tokens[j] == ",":
-            return False
+            return None
         if CONTACT & set(lemmas(tokens[j]).get("VERB", (tokens[j],))):
-            return not names_road_user(tokens[j + 1 : k])  # (not "debris hit the car beside me at 50 mph")
-    return False
+            return j
+    return None
 
 
 def _struck_at(tokens: list[str], i: int) -> tuple[int, int] | None:
@@ -525,11 +532,8 @@ def _struck_at(tokens: list[str], i: int) -> tuple[int, int] | None:
         return None
     if k >= 1 and tokens[k - 1] in IMPACT_NOUNS:  # ("Ego brakes hard, contact at 3 km/h": the impact's speed)
         return k - 1, k
-    verb = next(
-        (v for v in range(k - 1, max(k - 6, -1), -1) if CONTACT & set(lemmas(tokens[v]).get("VERB", (tokens[v],)))),
-        None,
-    )
-    if verb is None or any(t in SENTENCE_END or t == "," for t in tokens[verb + 1 : k]):
+    verb = _contact_before(tokens, k)
+    if verb is None:
         return None
     s = verb - 1
     while s > 0 and tokens[s] in _ADVERBS:

@@ -1418,11 +1418,11 @@ def _stop_as_state(m) -> bool:
     return first in STILL_WORDS or first in _STANDING or (m.prev in _PERFECT and not first.endswith("ing"))
 
 
-def _stopped_fully(m, tokens: list[str] | None) -> bool:
+def _stopped_fully(m, tokens: list[str]) -> bool:
     """Whether the still word ``m`` follows a degree adverb after an auxiliary ("my car was completely
     stopped", "I had fully stopped"): a state. Not denied ("had not completely stopped": still rolling),
     nor a stop of doing something ("I completely stopped paying attention")."""
-    if tokens is None or m.prev not in _DEGREE or m.start < 2:
+    if m.prev not in _DEGREE or m.start < 2:
         return False
     aux = tokens[m.start - 2]
     if aux not in _STATE_BEFORE or (m.start >= 3 and tokens[m.start - 3] in ("not", "never", "n't")):
@@ -1430,7 +1430,7 @@ def _stopped_fully(m, tokens: list[str] | None) -> bool:
     return not (m.end < len(tokens) and tokens[m.end].endswith("ing"))
 
 
-def ego_at_rest(clauses, tokens: list[str] | None = None) -> bool:
+def ego_at_rest(clauses, tokens: list[str]) -> bool:
     """Whether the ego is said to stand still as the scene opens: the ego, then a state of standing
     ("was stationary", "were waiting at the lights", "had stopped in a queue"), said before anyone does
     anything or as the background of what they do ("... while I was queuing"). Why: the one struck
