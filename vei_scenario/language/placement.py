@@ -129,13 +129,26 @@ def _on_road(info: MapInfo, pose: Pose) -> Pose:
     return pose
 
 
-def kerb_edge(pose: Pose, width_m: float) -> Pose:
-    """``pose`` (beyond the kerb) moved onto the road, to the outer edge of the kerb lane: where a
-    rider at the kerb rides before it swerves into the road (beyond the kerb it is on no lane, and
-    a lane change cannot start there). A left kerb (said by a writer who keeps left, on whose road
-    it is the near one) becomes the left edge of the ego's direction: the rider rides the ego's way
-    on its left, as the writer has it."""
-    inside = LANE_WIDTH_M / 2 - width_m / 2 - 0.2
+#: How far a rider keeps inside its lane's edge line at the kerb (m): room to swerve out of.
+KERB_MARGIN_M = 0.2
+#: A rider filtering past waiting cars rides just over the edge line, in the gutter (m, negative:
+#: outside the line): a car at its lane's centre then has about a third of a metre beside it.
+FILTERING_MARGIN_M = -0.1
+
+
+def edge_offset_m(width_m: float, margin_m: float = KERB_MARGIN_M) -> float:
+    """How far from its lane's centre (m) a road user ``width_m`` wide rides ``margin_m`` inside the
+    lane's edge line."""
+    return LANE_WIDTH_M / 2 - width_m / 2 - margin_m
+
+
+def kerb_edge(pose: Pose, width_m: float, margin_m: float = KERB_MARGIN_M) -> Pose:
+    """``pose`` (beyond the kerb) moved onto the road, to the outer edge of the kerb lane, ``margin_m``
+    inside its edge line: where a rider at the kerb rides before it swerves into the road (beyond the
+    kerb it is on no lane, and a lane change cannot start there). A left kerb (said by a writer who
+    keeps left, on whose road it is the near one) becomes the left edge of the ego's direction: the
+    rider rides the ego's way on its left, as the writer has it."""
+    inside = edge_offset_m(width_m, margin_m)
     if pose.lane_id > 0:  # the left kerb, across the other direction: the left edge of the ego's own
         return Pose(pose.road, -1, pose.s, inside, pose.facing)  # (a rider there goes the ego's way)
     return Pose(pose.road, pose.lane_id, pose.s, inside if pose.offset > 0 else -inside, pose.facing)

@@ -20,10 +20,24 @@ from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.behaviours.base import value
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.maps import ARM_LENGTH_M, LANE_WIDTH_M, ROUNDABOUT_RADIUS_M, layout
-from vei_scenario.language.placement import DEFAULT_FEATURE_DISTANCE_M, ego_pose, junction_conflict_m, lane_id
+from vei_scenario.language.placement import (
+    DEFAULT_FEATURE_DISTANCE_M,
+    FILTERING_MARGIN_M,
+    edge_offset_m,
+    ego_pose,
+    junction_conflict_m,
+    lane_id,
+)
 from vei_scenario.language.reader import read as read_text
 from vei_scenario.language.reading import Reading
-from vei_scenario.language.scenario_writer import DEFAULT_RATE_HZ, EGO_KIND, SWERVES_FROM_KERB, TYPES, vulnerable
+from vei_scenario.language.scenario_writer import (
+    DEFAULT_RATE_HZ,
+    EGO_KIND,
+    RIDERS_AT_KERB,
+    SWERVES_FROM_KERB,
+    TYPES,
+    vulnerable,
+)
 
 CRITICALITY_CLASSES = ("dangerous", "moderate", "safe")
 
@@ -181,6 +195,10 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             first_cfg["crossing_speed_mps"] = round(given_speed, 3)  # a crosser's stated speed is its crossing speed
         if first.NAME == "along_road" and spec.lateral_m is None and spec.facing is None:
             spec_lateral = _u(rng, -0.9, 0.0)  # somewhere in the kerb half of the lane
+            if relation == "behind" and intent != "collision":
+                # coming up from behind, it passes the ego: on the kerb side of the lane, just over its
+                # edge line as a rider filtering past does, not into the ego's back
+                spec_lateral = -edge_offset_m(TYPES[spec.kind][0][1], FILTERING_MARGIN_M)
         else:
             spec_lateral = spec.lateral_m
         starts_at_m = spec.distance_m
@@ -878,6 +896,16 @@ def _place_adversary(
         out_speed = _pace(kind, speed) if vulnerable(kind) else out_speed
         lon = distance_m if distance_m is not None else (-RIDES_UP_BEHIND_M if ego_speed < 0.5 else ego_speed * 2.0)
         spawn["longitudinal_m"] = round(lon, 3)
+    elif relation == "behind" and behaviour_name == "run_red_light" and kind in RIDERS_AT_KERB:
+        # a rider coming up behind the ego that runs the red ("came up the inside and went through on
+        # red"): it rides up the kerb side (the writer places it there) at its speed, or, not said, at
+        # its kind's pace and faster than a moving ego, from as far back as the text says, else just
+        # behind an ego waiting at the lights or farther behind one that goes
+        out_speed = _pace(kind, speed)
+        if speed is None and ego_speed >= 0.5:
+            out_speed = max(out_speed, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
+        back = distance_m if distance_m is not None else (RIDES_UP_BEHIND_M if ego_speed < 0.5 else 20.0)
+        spawn["longitudinal_m"] = round(-back, 3)
     elif relation.startswith("roadside"):
         cfg.setdefault("crossing_speed_mps", _crossing_speed(kind, cfg))
         lon = _crossing_lon_m(kind, relation, cfg, ego, lanes)
@@ -950,9 +978,6 @@ def _pace(kind: str, speed: float | None) -> float:
 #: How much faster than the ego one going along the road that comes up from behind rides, when its
 #: speed is not said (m/s; within its own top speed).
 COMES_UP_MPS = 2.0
-#: Riders who ride along the kerb or in a cycle lane before they swerve into the road (a walker there
-#: stands: what it does into the road is a crossing).
-RIDERS_AT_KERB = ("bicycle", "e-scooter")
 
 
 def _kerb_rider(

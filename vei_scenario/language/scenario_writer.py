@@ -69,6 +69,9 @@ def vulnerable(kind: str) -> bool:
 #: Behaviours of a rider at the kerb that move it sideways into the road along its lanes (a crossing
 #: goes straight across instead, from beyond the kerb): a lane change can start only on a lane.
 SWERVES_FROM_KERB = ("change_lane", "cut_in", "overtake", "forced_turn", "cut_out")
+#: Riders who ride along the kerb or in a cycle lane (past waiting cars, or before they swerve into the
+#: road); a walker there stands: what it does into the road is a crossing.
+RIDERS_AT_KERB = ("bicycle", "e-scooter")
 #: Signal state strings (red;yellow;green lamps), as esmini's examples write them.
 RED, GREEN = "on;off;off", "off;off;on"
 WEATHER = {  # cloud state, precipitation (type, intensity mm/h), fog visual range (m), default friction
@@ -385,7 +388,20 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         # (a rider at the kerb whose first act is running the red rides on along the road through the
         # junction, as placement has it: from the kerb lane's edge too, as its route must start on a lane of its way)
         rides_through = does[0] == "run_red_light"
-        if at_kerb and (swerves or rides_through):
+        if rides_through and adv["spawn"]["relation"] == "behind" and kind in RIDERS_AT_KERB:
+            # a rider coming up behind the ego that runs the red ("came up the inside and rode through
+            # on red") rides up the kerb side of the ego's direction, as a kerb rider does: in the ego's
+            # lane behind it, it would run into an ego that waits at the lights
+            pose = placement.Pose(pose.road, -info.lanes, pose.s, 0.0, pose.facing)
+            at_kerb = True
+        if at_kerb and rides_through:
+            # riding on past an ego that may stand in the kerb lane: just over the lane's edge line,
+            # where a rider filters past a waiting car, not at arm's length from its door
+            pose = placement.kerb_edge(pose, TYPES[kind][0][1], placement.FILTERING_MARGIN_M)
+            ctx.actor_offset_m = pose.offset
+            ctx.actor_lane_id = pose.lane_id
+            at_kerb = "give_way" in does
+        elif at_kerb and swerves:
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
             # still stands there as at the kerb, its way across measured from there; at the left kerb (a
