@@ -35,6 +35,7 @@ from vei_scenario.language import lexicon as L
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
+from vei_scenario.language.designed_outcome import designed_outcome
 from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.function_words import CLAUSE_BREAKS, PHRASE_ENDS, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
@@ -46,6 +47,8 @@ from vei_scenario.language.thought_of import only_thought_of
 from vei_scenario.language.who import TOWED
 
 COLLISION, NEAR_MISS, SAFE, CRITICAL = "collision", "near_miss", "safe", "critical"
+#: The kind of a cue of the class an event is designed for, before that class ("designed:near_miss").
+DESIGNED = "designed:"
 
 #: What ends a clause, and with it the scope of a negation or a hedge: these marks and the words of
 #: :data:`function_words.CLAUSE_BREAKS`.
@@ -3006,6 +3009,9 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
         cues.append(Cue("alarm", "emergency"))  # (AEB triggered, high criticality, fear: see decide)
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
+    designed = designed_outcome(tokens)
+    if designed:
+        cues.append(Cue(DESIGNED + designed, "designed"))  # (the class a test or study designs its event for)
     return tuple(cues)
 
 
@@ -3206,7 +3212,8 @@ def _hindsight(words: list[str], i: int) -> bool:
 
 
 def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entered: bool = False) -> str | None:
-    """The intent the cues state. A scenario a test rates critical is ``critical``, whatever else
+    """The intent the cues state. A class the text designs its event for (see :mod:`.designed_outcome`)
+    is the intent, whatever else is said. A scenario a test rates critical is ``critical``, whatever else
     is said but a contact (a contact is what happened, a rating only how close it came); otherwise a
     contact anywhere is a collision; a hedge, a miss, a small margin
     or a close call a near miss; then a stated safe pass; a denied contact is a near miss unless the
@@ -3223,6 +3230,9 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
     other, as the ego's evasion is ("a rider ran the red and the Tesla braked hard"); without one, a
     hard brake is the lead vehicle's own act ("the lead car brakes hard"), no escape. An ``alarm``
     (an emergency said anywhere: :func:`_emergency_said`) makes a roomy stop a near miss."""
+    designed = [c.kind[len(DESIGNED) :] for c in cues if c.kind.startswith(DESIGNED)]
+    if designed:
+        return designed[-1]  # (the event's class as designed, over how one run of it is told)
     kinds = {c.kind for c in cues}
     if "knock" in kinds:
         kinds.discard("knock")  # (a light knock felt or heard is a contact, unless a miss or a safe pass is

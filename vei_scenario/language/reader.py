@@ -93,6 +93,7 @@ from vei_scenario.language.clauses import sentence_start, sentence_stop
 from vei_scenario.language.comment_clause import without_comment_clauses
 from vei_scenario.language.elsewhere import stands_elsewhere
 from vei_scenario.language.function_words import DETERMINERS, PHRASE_ENDS
+from vei_scenario.language.gherkin_outline import filled_outline
 from vei_scenario.language.lemmas import lemmas as _lemmas
 from vei_scenario.language.light_verbs import LIGHT_VERBS, acts_said_as_nouns, set_aside
 from vei_scenario.language.manner import apply_manner, stated_manner, tight_cut_ins
@@ -1926,6 +1927,7 @@ def read(text: str) -> Reading:
     (:func:`who.unnamed_subjects`: of the first few, the first that gives its road users a behaviour);
     the noun is listed as not used."""
     text = plain_letters(text)  # ("piéton", "Fußgänger": the reader's words are plain letters)
+    text = filled_outline(text)  # ("at <v_ego> km/h ... Examples: | v_ego | / | 70 |": at 70 km/h)
     answered = speed_answered(text)  # ("How fast were you going? / C: Twenty.": said as the caller's speed)
     reading = _read_answered(answered)
     if reading is not None and answered != text:  # (the words put in to say the answer are no words of the text)

@@ -1,0 +1,120 @@
+"""The outcome a test or study designs its event for, and Gherkin Scenario Outlines filled in from
+their Examples table. Wordings written for these tests."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.designed_outcome import designed_outcome
+from vei_scenario.language.gherkin_outline import filled_outline
+from vei_scenario.language.reader import read
+
+
+@pytest.mark.parametrize(
+    ("text", "intent"),
+    [
+        # the class designed, over what one participant's run or a wish says
+        (
+            "A van pulls out of the side road on the right. The event is designed as a near miss; most drivers "
+            "stopped, two hit the van.",
+            "near_miss",
+        ),
+        (
+            "Event 3 was scripted as a near-crash: a cyclist crosses from the left kerb 20 m ahead, and a crash "
+            "is not wanted.",
+            "near_miss",
+        ),
+        (
+            "A child runs out from between parked cars. The timing was intended to be just avoidable with an "
+            "immediate full stop; P12 still struck the child.",
+            "near_miss",
+        ),
+        ("A jogger crosses at the zebra from the right when the car is 70 m away. No criticality intended.", "safe"),
+        (
+            "Baseline drive: a lorry ahead slows for a junction. The event is intended as a benign control event, "
+            "all drivers braked hard anyway.",
+            "safe",
+        ),
+        (
+            "A scooter rider rides off the kerb into the lane 8 m ahead of the car. Contact was unavoidable by "
+            "design, for the airbag study.",
+            "collision",
+        ),
+        (
+            "The hatchback runs the red light from the left; the run was planned so that the collision is "
+            "unavoidable without braking.",
+            "collision",
+        ),
+    ],
+)
+def test_the_class_an_event_is_designed_for_is_its_intent(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    ("text", "intent"),
+    [
+        ("A cyclist pulled out and I hit him. The AEB is designed to help avoid collisions.", "collision"),
+        ("With ACC set to 100 km/h a car cut in 20 m ahead and I braked hard, missing it by a metre.", "near_miss"),
+        ("A pedestrian stepped out and the car stopped well short, as intended.", "safe"),
+    ],
+)
+def test_design_said_of_something_else_leaves_the_outcome_as_told(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    ("tokens", "found"),
+    [
+        ("the event was designed as a near miss .", "near_miss"),
+        ("designed such that the impact is unavoidable .", "collision"),
+        ("a van , designed as non-critical ; drivers just let it in", "safe"),
+        ("the aeb is designed to prevent a crash .", None),
+        ("designed , as you know , by a team in turin : a near miss happened", None),
+        ("a near miss , not intended", None),
+    ],
+)
+def test_designed_outcome_reads_only_what_the_design_is_for(tokens, found):
+    assert designed_outcome(tokens.split()) == found
+
+
+OUTLINE = """Scenario Outline: Lead car brakes
+  Given the ego follows a lead car at <v_ego> km/h with a gap of <gap> m
+  When the lead car brakes at <decel> m/s^2
+  Then <result>
+
+  Examples:
+    | v_ego | gap | decel | result                      |
+    | 64    | 22  | 6     | the ego stops without contact |
+    | 80    | 30  | 8     | the ego hits the lead car   |
+"""
+
+
+def test_an_outline_is_filled_from_the_first_row_of_its_examples():
+    filled = filled_outline(OUTLINE)
+    assert "at 64 km/h with a gap of 22 m" in filled and "Then the ego stops without contact" in filled
+    assert "Examples" not in filled and "|" not in filled and "80" not in filled
+
+
+def test_an_outline_is_read_with_its_row_s_values():
+    r = read(OUTLINE)
+    assert round(r.ego_speed_mps * 3.6) == 64
+    assert [a.kind for a in r.actors] == ["car"] and r.actors[0].distance_m == 22
+    assert r.intent != "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist <rider> crossed in front of me.",  # (no table)
+        "A car at <v> mph cut in.\nExamples:\n| v | w |\n",  # (a header and no row)
+        "A van at <v> mph.\nExamples:\n| v | w |\n| 30 |\n",  # (a row that does not fit its header)
+    ],
+)
+def test_text_that_is_no_outline_is_left_as_it_is(text):
+    assert filled_outline(text) == text
+
+
+def test_a_placeholder_no_row_names_stays_as_it_is():
+    filled = filled_outline("The van at <x> km/h, the rider at <v> km/h.\nScenarios:\n| v | w |\n| 12 | 3 |\n")
+    assert filled == "The van at <x> km/h, the rider at 12 km/h."
