@@ -20,6 +20,7 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import spoken_lengths
+from vei_scenario.language.imperative import imperative_as_ego
 from vei_scenario.language.lemmas import english, lemmas
 
 _ONES = {
@@ -1113,6 +1114,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = _heavy_vehicles(text)
+    text = imperative_as_ego(text)  # ("Follow a decelerating van": we follow it)
     # "ran his red", "passing their red light": the runner's own signal is the red light, said as any is
     text = re.sub(r"\b(?:his|her|their|its)\s+(?=red\b)", "the ", text)
     # a list (bullets, numbered steps, one item a line): each item its own sentence

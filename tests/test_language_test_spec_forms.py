@@ -1,5 +1,6 @@
-"""The outcome a test or study designs its event for, and Gherkin Scenario Outlines filled in from
-their Examples table. Wordings written for these tests."""
+"""The forms of test cases and study protocols: the outcome an event is designed for, Gherkin Scenario
+Outlines filled in from their Examples table, and a title or step that tells the ego what to do.
+Wordings written for these tests."""
 
 from __future__ import annotations
 
@@ -118,3 +119,46 @@ def test_text_that_is_no_outline_is_left_as_it_is(text):
 def test_a_placeholder_no_row_names_stays_as_it_is():
     filled = filled_outline("The van at <x> km/h, the rider at <v> km/h.\nScenarios:\n| v | w |\n| 12 | 3 |\n")
     assert filled == "The van at <x> km/h, the rider at 12 km/h."
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "relation"),
+    [
+        ("Follow a braking lorry at 2 s headway.", "truck", "ahead"),
+        ("Step 2: overtake a cyclist riding at 15 km/h with at least 1.5 m clearance.", "bicycle", "ahead"),
+        (
+            "TC-114  Follow a slowing lorry\nThe VUT drives behind a lorry at 70 km/h; the lorry slows to 40 km/h.",
+            "truck",
+            "ahead",
+        ),
+        (
+            "Overtake a slow cyclist on the climb\nThe car drives at 60 km/h and a cyclist rides ahead at 18 km/h.",
+            "bicycle",
+            "ahead",
+        ),
+        (
+            "Objective: approach a broken-down van\nThe test car drives at 80 km/h; a van stands 120 m ahead.",
+            "van",
+            "ahead",
+        ),
+    ],
+)
+def test_a_title_that_tells_the_ego_what_to_do_names_the_road_user_it_is_done_to(text, kind, relation):
+    r = read(text)
+    assert [(a.kind, a.relation) for a in r.actors] == [(kind, relation)]
+    assert all(b[0] not in ("follow_vehicle", "overtake") for b in r.actors[0].behaviours)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Pass criteria: a cyclist crosses 20 m ahead and the ego stops.",
+        "Follow-up: a van pulled out of the side road on the left.",
+        "A van will follow the ego at 10 m and overtake it.",
+        "Detection range test",
+    ],
+)
+def test_no_command_where_none_is_given(text):
+    from vei_scenario.language.imperative import imperative_as_ego
+
+    assert imperative_as_ego(text.lower()) == text.lower()
