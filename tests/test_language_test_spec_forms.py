@@ -162,3 +162,36 @@ def test_no_command_where_none_is_given(text):
     from vei_scenario.language.imperative import imperative_as_ego
 
     assert imperative_as_ego(text.lower()) == text.lower()
+
+
+@pytest.mark.parametrize(
+    ("text", "intent"),
+    [
+        (
+            "A cyclist rides ahead in the lane at 15 km/h, VUT at 50 km/h. Expected: AEB full braking, the VUT "
+            "stops behind the cyclist, no impact.",
+            "near_miss",
+        ),
+        (
+            "VUT 40 km/h, a van stands in the lane. Pass if the AEB brakes hard and the VUT stays clear of the van.",
+            "near_miss",
+        ),
+        (
+            "A child runs out from behind a parked van 15 m ahead. Expected: AEB full braking, the car stops 1 m "
+            "before the dummy, no contact.",
+            "near_miss",
+        ),
+        (
+            "The cyclist swerves into the lane 10 m ahead; the AEB brakes hard and the VUT stops short of him.",
+            "near_miss",
+        ),
+        (
+            "A pedestrian crosses from the left 25 m ahead at 5 km/h. Pass: emergency braking by the AEB, no impact.",
+            "near_miss",
+        ),
+        ("A van slows down gently ahead; the ACC brakes gently and keeps the gap, no warning.", "safe"),
+        ("A scooter crossed from the right. The AEB did not brake and the car hit the scooter.", "collision"),
+    ],
+)
+def test_the_ego_s_own_emergency_brake_braking_is_the_ego_s_escape(text, intent):
+    assert read(text).intent == intent

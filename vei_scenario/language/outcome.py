@@ -1781,13 +1781,23 @@ def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> b
     """Whether the verb at ``i`` is the ego's: its subject before it is the ego, or it has none and the
     clause inherits the ego or opens a narrator's sentence ("Had to brake", "Swerved round him")."""
     j = i - 1
-    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
-        j -= 1
+    while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly") or (j == i - 1 and words[j] in _HARD)):
+        j -= 1  # (and the manner of a braking said as a noun: "AEB full braking", "emergency braking")
     if j < 0:
         if clause.inherited is not None:
             return clause.inherited == "ego"
         return story and clause.first_of_sentence
-    return _names_ego(words[: j + 1])
+    return _names_ego(words[: j + 1]) or _ego_system(words[: j + 1])
+
+
+#: The ego's own driving functions: what one of them does, the ego does ("the AEB brakes hard").
+_EGO_SYSTEMS = frozenset(("aeb", "aebs", "acc", "ads", "adas", "alks"))
+
+
+def _ego_system(words: list[str]) -> bool:
+    """Whether the noun phrase ending ``words`` is one of the ego's driving functions, not another's
+    ("the AEB", "AEB"; not "the lorry's AEB")."""
+    return bool(words) and words[-1] in _EGO_SYSTEMS and not (len(words) > 1 and words[-2].endswith("'s"))
 
 
 #: Words after which the ego is an object, not the subject ("the car behind the ego", "following ego").
