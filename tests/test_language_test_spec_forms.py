@@ -195,3 +195,31 @@ def test_no_command_where_none_is_given(text):
 )
 def test_the_ego_s_own_emergency_brake_braking_is_the_ego_s_escape(text, intent):
     assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "FP-31: a cyclist rides along the verge on the right at 15 km/h, VUT 70 km/h. Pass criteria: no FCW, "
+        "no AEB activation.",
+        "Scenario: parked van on the left\n  Given the VUT drives at 40 km/h past a van parked on the left\n"
+        "  Then the AEB shall not activate\n  And no warning shall be issued",
+        "A walker stands at the kerb on the right, 30 m ahead. Expected result:\n- no false activation\n"
+        "- the car keeps its 50 km/h",
+    ],
+)
+def test_an_expected_result_that_the_ego_s_systems_stay_quiet_is_a_safe_pass(text):
+    assert read(text).intent == "safe"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A van pulls out with no warning 15 m ahead; the SuT shall brake hard and stop.",
+        "AEB test with no driver intervention: a child runs out from the right 12 m ahead. Expected: no collision.",
+        "Hazard: no AEB intervention when a cyclist crosses from the right in front of the HV.",
+        "A cyclist pulled out in front of me, no FCW, I braked hard and stopped a foot short.",
+    ],
+)
+def test_a_missing_warning_that_is_no_expected_result_is_no_safe_pass(text):
+    assert read(text).intent != "safe"

@@ -40,6 +40,7 @@ from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.function_words import CLAUSE_BREAKS, PHRASE_ENDS, SUBJECT_PRONOUNS
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.light_contact import LOCATING, knock_felt, marking_met
+from vei_scenario.language.no_response import no_response_expected
 from vei_scenario.language.normalise import lies_on_roads
 from vei_scenario.language.quantities import a_size
 from vei_scenario.language.settings import FOOT_CROSSINGS
@@ -3019,6 +3020,9 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
         cues.append(Cue("alarm", "emergency"))  # (AEB triggered, high criticality, fear: see decide)
     if _rated_critical(tokens):
         cues.append(Cue("critical", "critical"))  # (the class a test states for its scenario)
+    quiet = no_response_expected(tokens)
+    if quiet:
+        cues.append(Cue("unforced", quiet))  # (a test expects the ego's systems to stay quiet: nothing forced)
     designed = designed_outcome(tokens)
     if designed:
         cues.append(Cue(DESIGNED + designed, "designed"))  # (the class a test or study designs its event for)

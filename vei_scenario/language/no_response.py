@@ -1,0 +1,79 @@
+"""A test's expected result that the ego's systems stay quiet: "Expected result: no FCW, no AEB",
+"Then the AEB shall not activate", "no warning shall be issued", "no ACC braking expected".
+
+Why: a false-positive test states its outcome this way. The road user is there, does its thing and
+is no threat; the case passes when nothing of the ego's reacts. Read as an outcome cue of its own
+("unforced": no escape was needed, see :func:`outcome.decide`), it makes the case a safe pass only
+where nothing else says the ego had to brake or swerve, nothing came close and nothing was hit: a
+requirement that the ego brake ("the SuT shall brake") or a near miss said beside it still wins.
+
+Only an expectation: the sentence, or the label just before it ("Expected result:"), says what is
+expected or required. Only the ego's systems and responses: a road user "with no warning" or
+"without warning" is a sudden act, and "no driver intervention" or "no driver braking" is how the
+test is set up (the system must do the work), not its outcome."""
+
+from __future__ import annotations
+
+#: Words that frame a sentence as what is expected of the ego ("Expected result", "Pass criteria",
+#: "Then ... shall").
+_EXPECTING = frozenset(
+    ("expected", "expect", "expects", "expectation", "pass", "passes", "criteria", "criterion", "shall", "should",
+     "must", "then", "acceptance", "requirement", "required", "result", "results")
+)  # fmt: skip
+#: Responses of the ego's systems whose absence is the expected result.
+_RESPONSES = frozenset(
+    ("fcw", "aeb", "aebs", "warning", "warnings", "intervention", "interventions", "activation", "activations",
+     "braking", "takeover", "tor", "alert", "alerts", "reaction")
+)  # fmt: skip
+#: What may stand between "no" and the response ("no false activation", "no emergency braking").
+_QUALIFIERS = frozenset(
+    ("false", "unnecessary", "emergency", "brake", "braking", "system", "aeb", "acc", "fcw", "visual", "acoustic",
+     "haptic", "or", "harsh", "hard", "strong", "automatic", "autonomous", "steering")
+)  # fmt: skip
+#: Verbs of a system's response, denied after "shall not" / "should not" / "must not".
+_RESPONDING = frozenset(("activate", "trigger", "intervene", "warn", "brake", "react", "fire", "issue", "alert"))
+#: The ego's systems, as the subject of a denied response.
+_SYSTEMS = frozenset(("aeb", "aebs", "fcw", "acc", "system", "function", "feature", "ads", "adas", "alks"))
+_SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
+
+
+def _sentences(tokens: list[str]) -> list[list[str]]:
+    out: list[list[str]] = [[]]
+    for w in tokens:
+        if w in _SENTENCE_ENDS:
+            out.append([])
+        else:
+            out[-1].append(w)
+    return [s for s in out if s]
+
+
+def _quiet_said(words: list[str]) -> list[str] | None:
+    """The words that say a response of the ego's stays away ("no fcw", "aeb shall not activate"),
+    or None."""
+    for k, w in enumerate(words):
+        if w == "no" and (k == 0 or words[k - 1] not in ("with", "without")):
+            j = k + 1
+            while j < len(words) and j <= k + 3 and words[j] in _QUALIFIERS and words[j] not in _RESPONSES:
+                j += 1
+            if j < len(words) and words[j] in _RESPONSES and words[j - 1] != "driver":
+                return words[k : j + 1]
+        if w in ("shall", "should", "must") and words[k + 1 : k + 2] == ["not"]:
+            subject = words[max(0, k - 2) : k]
+            verb = words[k + 2 : k + 3]
+            if set(subject) & _SYSTEMS and verb and verb[0] in _RESPONDING:
+                return words[max(0, k - 2) : k + 3]
+    return None
+
+
+def no_response_expected(tokens: list[str]) -> str | None:
+    """The words of an expected result that the ego's systems stay quiet, or None (see the module).
+    ``tokens``: the reader's lowercased tokens, punctuation apart."""
+    previous: list[str] = []
+    for words in _sentences(tokens):
+        framed = set(words) & _EXPECTING or (previous and previous[-1] == ":" and set(previous) & _EXPECTING)
+        if framed:
+            quiet = _quiet_said(words)
+            if quiet:
+                return " ".join(quiet)
+        previous = words
+    return None
