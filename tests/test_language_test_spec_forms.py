@@ -67,6 +67,23 @@ def test_design_said_of_something_else_leaves_the_outcome_as_told(text, intent):
 @pytest.mark.parametrize(
     ("tokens", "found"),
     [
+        # what the design is for names no class: collision words of a test's purpose
+        ("the run was tuned so that the time to collision at onset is 1.4 s .", None),
+        ("this case is intended to assess collision avoidance by the aeb .", None),
+        ("the test is designed to check whether an impact occurs .", None),
+        # denied, or said of a thing, not the event
+        ("the event is not designed as a near miss .", None),
+        ("the roundabout was designed as a benign low-speed zone .", None),
+        ("the warning is designed as a benign nudge .", None),
+        ("acc set to 100 km/h .", None),
+        # backwards only right before it
+        ("the kerb is benign as intended .", None),
+        ("damage non-critical by design of the bumper .", None),
+        ("no criticality intended .", "safe"),
+        # two designs: a redesign wins, two events that disagree say nothing, a contrast tells what happened
+        ("originally designed as a near miss , the case was re-parameterised as a collision .", "collision"),
+        ("event 1 intended as a near miss . event 2 intended as benign .", None),
+        ("designed as a near miss but actually it ended in a collision .", None),
         ("the event was designed as a near miss .", "near_miss"),
         ("designed such that the impact is unavoidable .", "collision"),
         ("a van , designed as non-critical ; drivers just let it in", "safe"),
@@ -223,3 +240,52 @@ def test_an_expected_result_that_the_ego_s_systems_stay_quiet_is_a_safe_pass(tex
 )
 def test_a_missing_warning_that_is_no_expected_result_is_no_safe_pass(text):
     assert read(text).intent != "safe"
+
+
+def test_every_examples_block_goes_and_each_outline_takes_its_own_first_row():
+    text = (
+        "Scenario Outline: Pedestrian from the right\r\n"
+        "  Given the ego drives at <v> km/h\r\n"
+        "  When a pedestrian crosses <d> m ahead\r\n"
+        "  Then the ego <result>\r\n"
+        "  Examples: nominal\r\n"
+        "    # speeds from the test plan\r\n"
+        "    | v  | d  | result          |\r\n"
+        "    |----|----|-----------------|\r\n"
+        "    | 40 | 25 | stops in time   |\r\n"
+        "  Examples: edge\r\n"
+        "    | v  | d  | result            |\r\n"
+        "    | 60 | 8  | hits the pedestrian |\r\n"
+        "Scenario Outline: Cyclist ahead\n"
+        "  Given a cyclist rides ahead at <w> km/h\n"
+        "  Examples:\n"
+        "    | w  |\n"
+        "    | 18 |\n"
+    )
+    filled = filled_outline(text)
+    assert "drives at 40 km/h" in filled and "crosses 25 m ahead" in filled and "the ego stops in time" in filled
+    assert "rides ahead at 18 km/h" in filled
+    assert "|" not in filled and "hits" not in filled and "<" not in filled and "\r" not in filled
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "ego_kph"),
+    [
+        (
+            "The participant follows a tractor at 40 km/h on a rural road; after 2 min the tractor brakes hard.",
+            "truck",
+            40,
+        ),
+        ("Participants followed a bus at 45 km/h. At the stop the bus braked sharply.", "truck", 45),
+        ("Participant 7 followed a learner car at 30 km/h until it stalled at the junction.", "car", 30),
+    ],
+)
+def test_a_driving_study_s_participant_drives_the_ego(text, kind, ego_kph):
+    r = read(text)
+    assert [(a.kind, a.relation) for a in r.actors] == [(kind, "ahead")]
+    assert round(r.ego_speed_mps * 3.6) == ego_kph
+
+
+def test_a_traffic_participant_is_no_ego():
+    r = read("Another traffic participant stepped off the kerb on the right in front of me.")
+    assert [a.kind for a in r.actors] == ["pedestrian"]

@@ -195,12 +195,13 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             first_cfg["crossing_speed_mps"] = round(given_speed, 3)  # a crosser's stated speed is its crossing speed
         if first.NAME == "along_road" and spec.lateral_m is None and spec.facing is None:
             spec_lateral = _u(rng, -0.9, 0.0)  # somewhere in the kerb half of the lane
-            if relation == "behind" and intent != "collision":
-                # coming up from behind, it passes the ego: on the kerb side of the lane, just over its
-                # edge line as a rider filtering past does, not into the ego's back
-                spec_lateral = -edge_offset_m(TYPES[spec.kind][0][1], FILTERING_MARGIN_M)
         else:
             spec_lateral = spec.lateral_m
+        if _passes_from_behind(spec, first.NAME, relation, intent):
+            # coming up from behind, it passes the ego: on the side said (else the kerb side) just over
+            # the lane's edge line, as a rider filtering past does, not into the ego's back or flank
+            side = 1.0 if spec_lateral is not None and spec_lateral > 0 else -1.0
+            spec_lateral = side * edge_offset_m(TYPES[spec.kind][0][1], FILTERING_MARGIN_M)
         starts_at_m = spec.distance_m
         if (
             first.NAME == "along_road"
@@ -948,6 +949,17 @@ def _place_adversary(
     elif distance_m is not None:
         spawn["longitudinal_m"] = distance_m if relation != "behind" else -distance_m
     return spawn, round(out_speed, 3)
+
+
+def _passes_from_behind(spec, first: str, relation: str, intent: str) -> bool:
+    """Whether a walker or rider said to come up behind the ego passes it in its lane: going along the
+    road, or (a rider) riding on through the red; not where the text says it hit the ego, nor one the
+    text turns to face the ego."""
+    if relation != "behind" or intent == "collision" or spec.facing is not None:
+        return False
+    return (first == "along_road" and vulnerable(spec.kind)) or (
+        first == "run_red_light" and spec.kind in RIDERS_AT_KERB
+    )
 
 
 def _roadside_speed(kind: str, speed: float | None) -> float:

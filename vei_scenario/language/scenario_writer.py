@@ -388,25 +388,15 @@ def write_scenario(layers: dict, stem: str) -> WrittenScenario:
         # (a rider at the kerb whose first act is running the red rides on along the road through the
         # junction, as placement has it: from the kerb lane's edge too, as its route must start on a lane of its way)
         rides_through = does[0] == "run_red_light"
-        if rides_through and adv["spawn"]["relation"] == "behind" and kind in RIDERS_AT_KERB:
-            # a rider coming up behind the ego that runs the red ("came up the inside and rode through
-            # on red") rides up the kerb side of the ego's direction, as a kerb rider does: in the ego's
-            # lane behind it, it would run into an ego that waits at the lights
-            pose = placement.Pose(pose.road, -info.lanes, pose.s, 0.0, pose.facing)
-            at_kerb = True
-        if at_kerb and rides_through:
-            # riding on past an ego that may stand in the kerb lane: just over the lane's edge line,
-            # where a rider filters past a waiting car, not at arm's length from its door
-            pose = placement.kerb_edge(pose, TYPES[kind][0][1], placement.FILTERING_MARGIN_M)
-            ctx.actor_offset_m = pose.offset
-            ctx.actor_lane_id = pose.lane_id
-            at_kerb = "give_way" in does
-        elif at_kerb and swerves:
+        if at_kerb and (swerves or rides_through):
             # a rider at the kerb that swerves into the road (or a walker at the verge the text has move
             # along it): on the kerb lane's edge, where a lane change can start; one that gives way first
             # still stands there as at the kerb, its way across measured from there; at the left kerb (a
-            # writer who keeps left), on the left edge of the ego's direction
-            pose = placement.kerb_edge(pose, TYPES[kind][0][1])
+            # writer who keeps left), on the left edge of the ego's direction. One riding on through
+            # the red, past an ego that may wait in the kerb lane, rides just over the edge line, where
+            # a rider filters past a waiting car, not at arm's length from its door.
+            margin = placement.FILTERING_MARGIN_M if rides_through else placement.KERB_MARGIN_M
+            pose = placement.kerb_edge(pose, TYPES[kind][0][1], margin)
             ctx.actor_offset_m = pose.offset
             ctx.actor_lane_id = pose.lane_id  # (from the left kerb: a lane of the ego's direction; routes start there)
             at_kerb = "give_way" in does
