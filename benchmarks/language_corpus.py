@@ -103,6 +103,8 @@ FIRST = {
     "language_independent_z50.json": ((50, 50, 7, 44), "measured when written"),
     "language_independent_z51.json": ((50, 50, 15, 43), "measured when written"),
     "language_independent_z52.json": ((50, 50, 12, 49), "measured when written"),
+    "language_independent_z53.json": ((50, 50, 12, 45), "measured when written"),
+    "language_independent_z54.json": ((50, 50, 7, 43), "measured when written"),
 }
 
 

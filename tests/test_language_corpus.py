@@ -87,7 +87,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z18.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z19.json": (50, 5),
     ROOT / "tests" / "data" / "language_independent_z20.json": (50, 32),
-    ROOT / "tests" / "data" / "language_independent_z21.json": (50, 14),
+    ROOT / "tests" / "data" / "language_independent_z21.json": (50, 15),
     ROOT / "tests" / "data" / "language_independent_z22.json": (50, 19),
     ROOT / "tests" / "data" / "language_independent_z23.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z24.json": (50, 12),
@@ -99,7 +99,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z30.json": (49, 5),
     ROOT / "tests" / "data" / "language_independent_z31.json": (50, 11),
     ROOT / "tests" / "data" / "language_independent_z32.json": (50, 7),
-    ROOT / "tests" / "data" / "language_independent_z33.json": (50, 16),
+    ROOT / "tests" / "data" / "language_independent_z33.json": (50, 17),
     ROOT / "tests" / "data" / "language_independent_z34.json": (50, 6),
     ROOT / "tests" / "data" / "language_independent_z35.json": (49, 15),
     ROOT / "tests" / "data" / "language_independent_z36.json": (50, 19),
@@ -117,8 +117,10 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z48.json": (50, 17),
     ROOT / "tests" / "data" / "language_independent_z49.json": (50, 14),
     ROOT / "tests" / "data" / "language_independent_z50.json": (50, 8),
-    ROOT / "tests" / "data" / "language_independent_z51.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z51.json": (50, 18),
     ROOT / "tests" / "data" / "language_independent_z52.json": (50, 13),
+    ROOT / "tests" / "data" / "language_independent_z53.json": (50, 15),
+    ROOT / "tests" / "data" / "language_independent_z54.json": (50, 11),
 }
 
 
