@@ -268,24 +268,36 @@ def test_every_examples_block_goes_and_each_outline_takes_its_own_first_row():
     assert "|" not in filled and "hits" not in filled and "<" not in filled and "\r" not in filled
 
 
-@pytest.mark.parametrize(
-    ("text", "kind", "ego_kph"),
-    [
-        (
-            "The participant follows a tractor at 40 km/h on a rural road; after 2 min the tractor brakes hard.",
-            "truck",
-            40,
-        ),
-        ("Participants followed a bus at 45 km/h. At the stop the bus braked sharply.", "truck", 45),
-        ("Participant 7 followed a learner car at 30 km/h until it stalled at the junction.", "car", 30),
-    ],
-)
-def test_a_driving_study_s_participant_drives_the_ego(text, kind, ego_kph):
-    r = read(text)
-    assert [(a.kind, a.relation) for a in r.actors] == [(kind, "ahead")]
-    assert round(r.ego_speed_mps * 3.6) == ego_kph
-
-
 def test_a_traffic_participant_is_no_ego():
     r = read("Another traffic participant stepped off the kerb on the right in front of me.")
     assert [a.kind for a in r.actors] == ["pedestrian"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "cyclist: pass the ego on the left while it waits at the lights.",  # (a road user's line)
+        "target car: overtake the vut at 90 km/h and cut in 12 m ahead.",
+        "a van was trying to\novertake a cyclist on the bend when it swerved.",  # (prose wrapped mid-sentence)
+        "follow the signs for the ring road and at the roundabout a lorry cut in.",  # (no road user after it)
+    ],
+)
+def test_a_command_that_is_not_the_ego_s_is_left_as_it_is(text):
+    from vei_scenario.language.imperative import imperative_as_ego
+
+    assert imperative_as_ego(text) == text
+
+
+@pytest.mark.parametrize(
+    ("text", "intent"),
+    [
+        ("A car cuts in 40 m ahead of us on the motorway and the ACC brakes to keep its distance.", None),
+        ("Their AEB braked hard when the cyclist came out; we were well behind them and stopped fine.", "safe"),
+        ("It was meant to be a quiet Sunday drive, but a van pulled out of a side road and hit me.", "collision"),
+        ("The run was set to be non-critical, but the car still hit the target at 15 km/h.", "collision"),
+        ("The jogger then stepped out from between two parked vans, giving no warning at all.", None),
+        ("Then the lead car carries on at 20 km/h, no braking, while the ego closes in from 80 m.", None),
+    ],
+)
+def test_words_of_a_test_said_in_a_story_leave_its_outcome_as_told(text, intent):
+    assert read(text).intent == intent

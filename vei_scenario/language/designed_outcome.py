@@ -32,10 +32,11 @@ _ABOUT = frozenset(("avoidance", "mitigation", "warning", "prevention", "alert",
 _OPENING = frozenset(("as", "to", "so", "such"))
 #: What is designed, when the design is the event's: the event, the scenario, its timing ("the timing
 #: was tuned so that ..."), or nothing said (a participle opening its clause: "Designed as non-critical").
+#: Not a pronoun: "It was meant to be a benign Sunday ride" opens a story, not a test.
 _EVENTS = frozenset(
     ("event", "events", "scenario", "scenarios", "case", "cases", "test", "tests", "run", "runs", "trial", "trials",
      "conflict", "conflicts", "situation", "encounter", "interaction", "manoeuvre", "maneuver", "timing", "trigger",
-     "parameters", "parameterisation", "parameterization", "condition", "block", "exposure", "it", "this", "which")
+     "parameters", "parameterisation", "parameterization", "condition", "block", "exposure")
 )  # fmt: skip
 #: Words between what is designed and the participle ("the event was deliberately designed").
 _AUXILIARIES = frozenset(
@@ -161,6 +162,10 @@ def _backward(tokens: list[str], i: int, after: tuple[str, ...]) -> str | None:
 _CONTRASTS = (("actually",), ("in", "fact"), ("in", "reality"), ("turned", "out"), ("in", "practice"))
 
 
+#: Words that set, in the design's own sentence, what happened against it.
+_BUT = frozenset(("but", "yet", "although", "though", "however"))
+
+
 def _contrast_at(tokens: list[str], k: int) -> bool:
     return any(tuple(tokens[k : k + len(c)]) == c for c in _CONTRASTS)
 
@@ -192,6 +197,9 @@ def designed_outcome(tokens: list[str]) -> str | None:
                 designs.append((kind, again))
     if any(_contrast_at(tokens, k) for k in range(first_design, len(tokens))):
         return None  # ("designed as a near miss but actually ended in a collision": what happened is told)
+    end = next((k for k in range(first_design, len(tokens)) if tokens[k] in (".", "!", "?", ";")), len(tokens))
+    if any(w in _BUT and tokens[k - 1] != "critical" for k, w in enumerate(tokens[first_design:end], first_design)):
+        return None  # ("The run was set to be non-critical, but the ego still hit the target")
     again = [kind for kind, redesign in designs if redesign]
     if again:
         return again[-1]

@@ -17,14 +17,23 @@ from __future__ import annotations
 #: Words that frame a sentence as what is expected of the ego ("Expected result", "Pass criteria",
 #: "Then ... shall").
 _EXPECTING = frozenset(
-    ("expected", "expect", "expects", "expectation", "pass", "passes", "criteria", "criterion", "shall", "should",
-     "must", "then", "acceptance", "requirement", "required", "result", "results")
+    ("expected", "expect", "expects", "expectation", "criteria", "criterion", "shall", "acceptance", "requirement",
+     "required")
 )  # fmt: skip
-#: Responses of the ego's systems whose absence is the expected result.
+#: "Pass" frames an expectation only as a label or a condition ("Pass: ...", "pass if ...", "pass
+#: criteria"), not as a verb of passing.
+_PASS_FRAMES = frozenset((":", "if", "when", "criteria", "criterion"))
+#: Responses of the ego's systems whose absence is the expected result ("braking" only as a system's,
+#: with a word of one before it: "no emergency braking", "no AEB braking"; "no braking" alone may be
+#: anyone's).
 _RESPONSES = frozenset(
     ("fcw", "aeb", "aebs", "warning", "warnings", "intervention", "interventions", "activation", "activations",
-     "braking", "takeover", "tor", "alert", "alerts", "reaction")
+     "braking", "takeover", "tor", "alert", "alerts")
 )  # fmt: skip
+#: Words before "braking" that make it a system's.
+_SYSTEM_BRAKING = frozenset(("emergency", "aeb", "automatic", "autonomous", "system", "harsh", "hard", "strong"))
+#: Words before "no" that make the response someone else's ("giving no warning", "gave no signal").
+_GIVING = frozenset(("giving", "gave", "give", "gives", "with", "without"))
 #: What may stand between "no" and the response ("no false activation", "no emergency braking").
 _QUALIFIERS = frozenset(
     ("false", "unnecessary", "emergency", "brake", "braking", "system", "aeb", "acc", "fcw", "visual", "acoustic",
@@ -51,12 +60,17 @@ def _quiet_said(words: list[str]) -> list[str] | None:
     """The words that say a response of the ego's stays away ("no fcw", "aeb shall not activate"),
     or None."""
     for k, w in enumerate(words):
-        if w == "no" and (k == 0 or words[k - 1] not in ("with", "without")):
+        if w == "no" and (k == 0 or words[k - 1] not in _GIVING):
             j = k + 1
             while j < len(words) and j <= k + 3 and words[j] in _QUALIFIERS and words[j] not in _RESPONSES:
                 j += 1
-            if j < len(words) and words[j] in _RESPONSES and words[j - 1] != "driver":
-                return words[k : j + 1]
+            if j >= len(words) or words[j] not in _RESPONSES or words[j - 1] == "driver":
+                continue
+            if words[j] == "braking" and words[j - 1] not in _SYSTEM_BRAKING:
+                continue  # ("the lead car continues, no braking": anyone's)
+            if words[j + 1 : j + 2] in (["from"], ["by"], ["came"], ["was"]):
+                continue  # ("no warning from the car", "no warning came": a road user's, or a story's)
+            return words[k : j + 1]
         if w in ("shall", "should", "must") and words[k + 1 : k + 2] == ["not"]:
             subject = words[max(0, k - 2) : k]
             verb = words[k + 2 : k + 3]
@@ -65,12 +79,20 @@ def _quiet_said(words: list[str]) -> list[str] | None:
     return None
 
 
+def _framed(words: list[str]) -> bool:
+    """Whether ``words`` say what is expected or required of the ego ("Expected result", "Pass criteria",
+    "Pass: ...", "the AEB shall not ...")."""
+    if set(words) & _EXPECTING:
+        return True
+    return any(w == "pass" and words[k + 1 : k + 2] and words[k + 1] in _PASS_FRAMES for k, w in enumerate(words))
+
+
 def no_response_expected(tokens: list[str]) -> str | None:
     """The words of an expected result that the ego's systems stay quiet, or None (see the module).
     ``tokens``: the reader's lowercased tokens, punctuation apart."""
     previous: list[str] = []
     for words in _sentences(tokens):
-        framed = set(words) & _EXPECTING or (previous and previous[-1] == ":" and set(previous) & _EXPECTING)
+        framed = _framed(words) or (previous and previous[-1] == ":" and _framed(previous))
         if framed:
             quiet = _quiet_said(words)
             if quiet:

@@ -1109,28 +1109,12 @@ def _heavy_vehicles(text: str) -> str:
     return re.sub(r"\bhv(s?)\b", r"lorry\1", text).replace("lorrys", "lorries")
 
 
-#: A driving study's participant, the driver of the ego, said as the one the study is about: "the
-#: participant('s)", "each participant", or "Participant(s)" opening a sentence ("Participants drove at
-#: 50 km/h", "Participant 14 approached"); not "a participant", "traffic participants", nor a count of
-#: them ("three of the 20 participants braked").
-_PARTICIPANT = re.compile(
-    r"\b(?:the|each|every|our|this)\s+participant\b|(?:^|(?<=[.;:!?\n]\s)|(?<=\n))participants?(?:\s+p?\d+\b)?"
-)
-
-
-def _participant_is_the_ego(text: str) -> str:
-    """``text`` with a driving study's participant (:data:`_PARTICIPANT`) said as the ego, whose driver
-    they are: "the participant follows a van" is the ego following it."""
-    return _PARTICIPANT.sub("the ego", text)
-
-
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = _heavy_vehicles(text)
     text = imperative_as_ego(text)  # ("Follow a decelerating van": we follow it)
-    text = _participant_is_the_ego(text)  # ("the participant follows a van": the ego follows it)
     # "ran his red", "passing their red light": the runner's own signal is the red light, said as any is
     text = re.sub(r"\b(?:his|her|their|its)\s+(?=red\b)", "the ", text)
     # a list (bullets, numbered steps, one item a line): each item its own sentence

@@ -1791,14 +1791,20 @@ def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> b
     return _names_ego(words[: j + 1]) or _ego_system(words[: j + 1])
 
 
-#: The ego's own driving functions: what one of them does, the ego does ("the AEB brakes hard").
-_EGO_SYSTEMS = frozenset(("aeb", "aebs", "acc", "ads", "adas", "alks"))
+#: The ego's emergency brake: its braking is the ego's emergency stop ("the AEB brakes hard"). Not a
+#: cruise control or a pilot, whose braking is routine.
+_EGO_SYSTEMS = frozenset(("aeb", "aebs"))
+#: Owners before a system that make it another's ("their AEB", "the lorry's AEB").
+_OTHERS = frozenset(("their", "his", "her", "its", "your", "other", "another"))
 
 
 def _ego_system(words: list[str]) -> bool:
-    """Whether the noun phrase ending ``words`` is one of the ego's driving functions, not another's
-    ("the AEB", "AEB"; not "the lorry's AEB")."""
-    return bool(words) and words[-1] in _EGO_SYSTEMS and not (len(words) > 1 and words[-2].endswith("'s"))
+    """Whether the noun phrase ending ``words`` is the ego's emergency brake, not another's ("the AEB",
+    "AEB"; not "the lorry's AEB", "their AEB")."""
+    if not words or words[-1] not in _EGO_SYSTEMS:
+        return False
+    owner = words[-2] if len(words) > 1 else ""
+    return not (owner.endswith("'s") or owner in _OTHERS)
 
 
 #: Words after which the ego is an object, not the subject ("the car behind the ego", "following ego").
