@@ -175,16 +175,13 @@ def designed_outcome(tokens: list[str]) -> str | None:
     scripted or intended to have; None where it says none, or two designs disagree (two events, or a
     design and a note against it) with no redesign said last. ``tokens``: the reader's lowercased
     tokens, punctuation apart."""
-    designs: list[tuple[str, bool]] = []
-    first_design = len(tokens)
+    designs: list[tuple[int, str, bool]] = []  # (where, the class, whether a redesign)
     for i, w in enumerate(tokens):
-        if not designs:
-            first_design = i
         for after in _AFTER:  # (said backwards: "no criticality intended")
             if tuple(tokens[i : i + len(after)]) == after:
                 kind = _backward(tokens, i, after)
                 if kind:
-                    designs.append((kind, False))
+                    designs.append((i, kind, False))
         if w not in _DESIGNING | _REDESIGNING:
             continue
         again = w in _REDESIGNING
@@ -194,14 +191,17 @@ def designed_outcome(tokens: list[str]) -> str | None:
         if tokens[o : o + 1] and tokens[o] in _OPENING and (again or _of_the_event(tokens, i)):
             kind = _forward(_window(tokens, o))
             if kind:
-                designs.append((kind, again))
+                designs.append((i, kind, again))
+    if not designs:
+        return None
+    first_design = designs[0][0]
     if any(_contrast_at(tokens, k) for k in range(first_design, len(tokens))):
         return None  # ("designed as a near miss but actually ended in a collision": what happened is told)
     end = next((k for k in range(first_design, len(tokens)) if tokens[k] in (".", "!", "?", ";")), len(tokens))
     if any(w in _BUT and tokens[k - 1] != "critical" for k, w in enumerate(tokens[first_design:end], first_design)):
         return None  # ("The run was set to be non-critical, but the ego still hit the target")
-    again = [kind for kind, redesign in designs if redesign]
+    again = [kind for _, kind, redesign in designs if redesign]
     if again:
         return again[-1]
-    kinds = {kind for kind, _ in designs}
+    kinds = {kind for _, kind, _ in designs}
     return kinds.pop() if len(kinds) == 1 else None

@@ -14,6 +14,8 @@ test is set up (the system must do the work), not its outcome."""
 
 from __future__ import annotations
 
+from vei_scenario.language.clauses import split
+
 #: Words that frame a sentence as what is expected of the ego ("Expected result", "Pass criteria",
 #: "Then ... shall").
 _EXPECTING = frozenset(
@@ -44,16 +46,6 @@ _RESPONDING = frozenset(("activate", "trigger", "intervene", "warn", "brake", "r
 #: The ego's systems, as the subject of a denied response.
 _SYSTEMS = frozenset(("aeb", "aebs", "fcw", "acc", "system", "function", "feature", "ads", "adas", "alks"))
 _SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
-
-
-def _sentences(tokens: list[str]) -> list[list[str]]:
-    out: list[list[str]] = [[]]
-    for w in tokens:
-        if w in _SENTENCE_ENDS:
-            out.append([])
-        else:
-            out[-1].append(w)
-    return [s for s in out if s]
 
 
 def _quiet_said(words: list[str]) -> list[str] | None:
@@ -91,7 +83,7 @@ def no_response_expected(tokens: list[str]) -> str | None:
     """The words of an expected result that the ego's systems stay quiet, or None (see the module).
     ``tokens``: the reader's lowercased tokens, punctuation apart."""
     previous: list[str] = []
-    for words in _sentences(tokens):
+    for words, _ in split(tokens, _SENTENCE_ENDS):
         framed = _framed(words) or (previous and previous[-1] == ":" and _framed(previous))
         if framed:
             quiet = _quiet_said(words)

@@ -1791,9 +1791,10 @@ def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> b
     return _names_ego(words[: j + 1]) or _ego_system(words[: j + 1])
 
 
-#: The ego's emergency brake: its braking is the ego's emergency stop ("the AEB brakes hard"). Not a
-#: cruise control or a pilot, whose braking is routine.
-_EGO_SYSTEMS = frozenset(("aeb", "aebs"))
+#: The names of an emergency brake, as the reader lowercases them ("AEB", "emergency brake assist"). The
+#: ego's is its emergency stop when it brakes ("the AEB brakes hard"); not a cruise control or a pilot,
+#: whose braking is routine.
+_EMERGENCY_BRAKES = frozenset(("aeb", "aebs"))
 #: Owners before a system that make it another's ("their AEB", "the lorry's AEB").
 _OTHERS = frozenset(("their", "his", "her", "its", "your", "other", "another"))
 
@@ -1801,7 +1802,7 @@ _OTHERS = frozenset(("their", "his", "her", "its", "your", "other", "another"))
 def _ego_system(words: list[str]) -> bool:
     """Whether the noun phrase ending ``words`` is the ego's emergency brake, not another's ("the AEB",
     "AEB"; not "the lorry's AEB", "their AEB")."""
-    if not words or words[-1] not in _EGO_SYSTEMS:
+    if not words or words[-1] not in _EMERGENCY_BRAKES:
         return False
     owner = words[-2] if len(words) > 1 else ""
     return not (owner.endswith("'s") or owner in _OTHERS)
@@ -2607,8 +2608,6 @@ def _rated_critical(tokens: list[str]) -> bool:
 #: Verbs (lemmas) and nouns of an emergency system's going off ("AEB triggered", "the AEB kicked in").
 _TRIGGERING = frozenset(("trigger", "activate", "fire", "kick", "intervene", "engage", "deploy", "activation",
                          "intervention"))  # fmt: skip
-#: The names of an emergency brake, as the reader lowercases them ("AEB", "emergency brake assist").
-_EMERGENCY_BRAKES = frozenset(("aeb", "aebs"))
 #: What a criticality is said to be when the scene came close ("Criticality: high", "high criticality").
 _HIGH = frozenset(("high", "severe", "extreme", "critical"))
 #: Words between "criticality" and its value ("criticality: high", "criticality was very high").

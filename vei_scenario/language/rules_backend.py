@@ -873,10 +873,8 @@ def _place_adversary(
     if behaviour_name == "along_road":
         pace = _pace(kind, speed)
         if relation == "behind":  # coming up from behind ("came up the inside along the kerb"): faster
-            if speed is None:
-                pace = max(pace, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
             spawn["longitudinal_m"] = -(distance_m if distance_m is not None else 20.0)
-            return spawn, round(pace, 3)
+            return spawn, round(_coming_up_pace(kind, speed, ego_speed), 3)
         spawn["relation"] = "ahead"
         spawn["longitudinal_m"] = distance_m if distance_m is not None else 40.0
         return spawn, round(pace, 3)
@@ -902,9 +900,7 @@ def _place_adversary(
         # red"): it rides up the kerb side (the writer places it there) at its speed, or, not said, at
         # its kind's pace and faster than a moving ego, from as far back as the text says, else just
         # behind an ego waiting at the lights or farther behind one that goes
-        out_speed = _pace(kind, speed)
-        if speed is None and ego_speed >= 0.5:
-            out_speed = max(out_speed, min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
+        out_speed = _coming_up_pace(kind, speed, ego_speed)
         back = distance_m if distance_m is not None else (RIDES_UP_BEHIND_M if ego_speed < 0.5 else 20.0)
         spawn["longitudinal_m"] = round(-back, 3)
     elif relation.startswith("roadside"):
@@ -990,6 +986,14 @@ def _pace(kind: str, speed: float | None) -> float:
 #: How much faster than the ego one going along the road that comes up from behind rides, when its
 #: speed is not said (m/s; within its own top speed).
 COMES_UP_MPS = 2.0
+
+
+def _coming_up_pace(kind: str, speed: float | None, ego_speed: float) -> float:
+    """The speed (m/s) of a walker or rider said to come up behind the ego: its stated speed, else its
+    kind's pace, and faster than the ego by :data:`COMES_UP_MPS` (within its own top speed)."""
+    if speed is not None:
+        return speed
+    return max(_pace(kind, None), min(ego_speed + COMES_UP_MPS, TYPES[kind][3]))
 
 
 def _kerb_rider(
