@@ -511,3 +511,61 @@ def test_a_rider_coming_up_behind_along_the_road_passes_the_ego(kind, lanes, ego
     layers = sample_layers(reading, "test", 0)
     along = _passes_beside(play_layers(layers, tmp_path), 1.0 if lateral and lateral > 0 else -1.0)
     assert along[-1] > 0.0  # (to ahead of the ego)
+
+
+@pytest.mark.parametrize("kind", ["e-scooter", "bicycle"])
+@pytest.mark.parametrize(
+    ("behaviour", "map_kind"), [("along_road", "straight"), ("along_road", "curve"), ("run_red_light", "crossroad")]
+)
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_rider_coming_up_behind_an_ego_of_unsaid_speed_passes_it(kind, behaviour, map_kind, seed, tmp_path):
+    """Where the text leaves the ego's speed open, a rider said to come up behind it ("an e-scooter came
+    up the inside along the kerb") tells of an ego slower than the rider: drawn at the road's pace
+    (10-17 m/s), the ego drew away from a rider capped at its top speed, which never came up."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec(kind, "behind", None, None, [(behaviour, {}, None, "sequence")])
+    reading = Reading(map_kind=map_kind, lanes=1, actors=[rider])
+    layers = sample_layers(reading, "test", seed)
+    assert float(layers["ego"]["speed_mps"]) < float(layers["adversaries"][0]["speed_mps"])
+    along = _passes_beside(play_layers(layers, tmp_path), -1.0)
+    assert along[-1] > 0.0
+
+
+@pytest.mark.parametrize("behaviour", ["run_red_light", "along_road"])
+def test_a_rider_from_behind_said_to_hit_an_ego_of_unsaid_speed_reaches_it(behaviour, tmp_path):
+    """ "A cyclist came up behind me and went into my back", the ego's speed not said: the rider is
+    faster than the ego, and the contact the text states comes."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec("bicycle", "behind", None, None, [(behaviour, {}, None, "sequence")])
+    map_kind = "crossroad" if behaviour == "run_red_light" else "straight"
+    reading = Reading(map_kind=map_kind, lanes=1, actors=[rider], intent="collision")
+    layers = sample_layers(reading, "test", 0)
+    assert play_layers(layers, tmp_path).collisions
+
+
+@pytest.mark.parametrize("stated_mps", [4.0, 6.0])
+def test_a_rider_at_a_stated_speed_coming_up_behind_sets_the_ego_below_it(stated_mps):
+    """A rider said to come up behind at a stated speed ("doing 15 km/h") passes an ego of unsaid speed
+    only if the ego is slower than that speed, not slower than the rider's top speed."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec("bicycle", "behind", None, stated_mps, [("along_road", {}, None, "sequence")])
+    layers = sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider]), "test", 0)
+    assert float(layers["ego"]["speed_mps"]) < stated_mps
+
+
+def test_a_bicycle_coming_up_behind_an_ego_waiting_at_the_lights_rides_at_a_rider_s_pace():
+    """A bicycle behind an ego waiting at the lights that runs the red rides at a cyclist's pace, not at
+    a bicycle's top speed (36 km/h) drawn from the road's."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec("bicycle", "behind", None, None, [("run_red_light", {}, None, "sequence")])
+    for seed in range(5):
+        reading = Reading(map_kind="crossroad", lanes=1, ego_speed_mps=0.0, actors=[rider])
+        assert float(sample_layers(reading, "test", seed)["adversaries"][0]["speed_mps"]) < 7.0

@@ -130,7 +130,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         drawn = _u(rng, lo, hi)
         ego_speed = reading.scene_pace_mps if reading.scene_pace_mps is not None else drawn  # (the scene's one)
     if reading.ego_speed_mps is None:
-        ego_speed = min([ego_speed] + [_passable_mps(a.kind) for a in reading.actors if _passes_ego(a)])
+        ego_speed = min([ego_speed] + [_passable_mps(a.kind, a.speed_mps) for a in reading.actors if _passes_ego(a)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
@@ -180,7 +180,13 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
         if first.NAME in DRIVES and given_speed is not None and given_speed < DRIVES_AT_LEAST_MPS:
             given_speed = None  # (it drives from the start: a standstill read for it is where it ends, or another's)
-        if given_speed is None and first.NAME in DRIVES and ego_speed == 0.0 and vulnerable(spec.kind):
+        if (
+            given_speed is None
+            and first.NAME in DRIVES
+            and ego_speed == 0.0
+            and vulnerable(spec.kind)
+            and relation != "behind"  # (one coming up behind rides at its own pace: _coming_up_pace)
+        ):
             given_speed = min(_u(rng, lo, hi), TYPES[spec.kind][3])  # (not the ego's standstill: a rider's pace)
         if given_speed is None and first.NAME == "wrong_way":
             given_speed = min(_u(rng, 10.0, 20.0), TYPES[spec.kind][3])  # (a rider within its own top speed)
@@ -334,13 +340,21 @@ PASSING_MARGIN_MPS = 4.0
 
 
 def _passes_ego(spec) -> bool:
-    return any(b[0] == "overtake" for b in spec.behaviours)
+    """Whether the road user must be faster than the ego: it overtakes it, or it is a rider said to come
+    up behind it along the road or through the red ("came up the inside along the kerb")."""
+    first = spec.behaviours[0][0] if spec.behaviours else None
+    from_behind = spec.relation == "behind" and spec.facing is None and spec.kind in RIDERS_AT_KERB
+    return any(b[0] == "overtake" for b in spec.behaviours) or (
+        from_behind and first in ("along_road", "run_red_light")
+    )
 
 
-def _passable_mps(kind: str) -> float:
+def _passable_mps(kind: str, speed: float | None = None) -> float:
     """The fastest the ego may go for a road user of ``kind`` to pass it: a bicycle or an e-scooter
-    that overtakes ("flies past me on the inside") tells of an ego slower than the rider can ride."""
-    return max(TYPES[kind][3] - PASSING_MARGIN_MPS, 2.0)
+    that overtakes ("flies past me on the inside") or comes up behind tells of an ego slower than the
+    rider rides (its stated speed, else its top speed)."""
+    top = TYPES[kind][3] if speed is None or speed <= 0 else min(speed, TYPES[kind][3])
+    return max(top - PASSING_MARGIN_MPS, 2.0)
 
 
 #: Seconds of head-on closing a wrong-way road user needs beyond its swerve, drifting over from its own
