@@ -410,3 +410,32 @@ def test_a_bare_speed_on_a_numbered_british_road_is_in_mph(text, kph):
 )
 def test_a_car_model_is_no_numbered_road(text, kph):
     assert ego_kph(text) == pytest.approx(kph, abs=0.2)
+
+
+# --- the ego at rest said in the simple past of a verb of standing: "I waited at the lights" ------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "While I waited at the lights, a cyclist came up the inside and rode through on red.",
+        "I sat at the lights when a van ran into the back of me.",
+        "We queued at the roundabout entry; a van from the left cut across us.",
+        "I waited at the junction to turn right. A car came from the left and hit me.",
+        "As we idled at the crossing a scooter clipped our mirror.",
+    ],
+    ids=["while-i-waited", "i-sat", "we-queued", "i-waited-to-turn", "as-we-idled"],
+)
+def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
+    assert ego_kph(text) == 0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I drove down the high street. A cyclist waited at the lights and then rode out in front of me.",
+        "I stood on the brakes as a cyclist came past me and cut in.",
+        "A van cut in front of me and I waited for it to go, then drove on at 30 mph.",
+    ],
+    ids=["another-waited", "stood-on-the-brakes", "waited-after-another-acts"],
+)
+def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):
+    assert ego_kph(text) != 0

@@ -1456,7 +1456,9 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            still = m.words in STILL_WORDS or m.words in _STANDING  # ("was stationary", "we were stood at the lights")
+            still = (
+                m.words in STILL_WORDS or m.words in _STANDING or m.words in _STATIVE_PAST
+            )  # ("was stationary", "we were stood at the lights")
             denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
             if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
@@ -1468,7 +1470,13 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
             if (
                 ego.slot == "actor"
                 and ego.value == "ego"
-                and (m.prev in _STATE_BEFORE or denied or _verbless_state(ego, m) or _stopped_fully(m, tokens))
+                and (
+                    m.prev in _STATE_BEFORE
+                    or denied
+                    or _verbless_state(ego, m)
+                    or _stopped_fully(m, tokens)
+                    or _stative_past(ego, m)
+                )
             ):
                 if not acted or ego.prev in _BACKGROUND:
                     return True
@@ -1533,6 +1541,18 @@ def _subjectless_state(m, after) -> bool:
         return False
     named = next((x for x in after if x.slot in ("actor", "pronoun")), None)
     return not (named is not None and named.value == "ego")
+
+
+#: Verbs of standing whose simple past is a state the subject was in, not a stop it made ("I waited at
+#: the lights", "we sat in the queue", "I queued at the roundabout"); "I stopped" and "I pulled up" are acts.
+_STATIVE_PAST = frozenset({"waited", "sat", "stood", "queued", "idled"})
+
+
+def _stative_past(ego, state) -> bool:
+    """Whether a verb of standing in the simple past follows the ego's name right after it ("While I
+    waited at the lights, a cyclist ...", "I sat at the lights when a van hit me"): the past of
+    waiting, sitting or queuing is a state, as "was waiting" is."""
+    return state.words in _STATIVE_PAST and ego.end == state.start
 
 
 def _verbless_state(ego, state) -> bool:
