@@ -275,7 +275,7 @@ def test_vei_describe_keeps_a_transcripts_turns():
     control characters go, its line breaks stay."""
     text = "CT: How fast were you going?\r\n\x1b[31mC:\x1b[0m Forty?\tNot more.\n\nC: A cyclist came the wrong way."
     said = readable_description(text)
-    assert said == "CT: How fast were you going?\nC: Forty? Not more.\nC: A cyclist came the wrong way."
+    assert said == "CT: How fast were you going?\nC: Forty? Not more.\n\nC: A cyclist came the wrong way."
     assert _ego(said) == pytest.approx(40 * KPH)
     assert "doing" not in read(said).ignored  # (the words that say the answer as a speed are not the writer's)
 
@@ -291,3 +291,32 @@ def test_vei_describe_keeps_a_transcripts_turns():
 )
 def test_vei_describe_keeps_breaks_that_end_or_open_and_joins_wrapped_lines(text, said):
     assert readable_description(text) == said
+
+
+@pytest.mark.parametrize(
+    "text, said",
+    [
+        ("Examples:\n  | v | d |\n  | 70 | 45 |", "Examples:\n| v | d |\n| 70 | 45 |"),
+        (
+            "And a van parks on the right\n\n  # our own name for it\n  Scenario: x",
+            "And a van parks on the right\n\n# our own name for it\nScenario: x",
+        ),
+        ("> what did the lorry do\nIt pulled out", "> what did the lorry do\nIt pulled out"),
+        ("Near miss at the school\n\n\n\na boy ran out", "Near miss at the school\n\na boy ran out"),
+    ],
+    ids=["table-rows", "comment-after-blank-line", "quoted-line", "blank-lines-as-one"],
+)
+def test_vei_describe_keeps_rows_comments_quotes_and_paragraphs(text, said):
+    assert readable_description(text) == said
+
+
+def test_vei_describe_reads_an_outline_as_the_library_does():
+    """A feature file's Scenario Outline, pasted into ``vei describe``, is read with its Examples row's
+    values, as :func:`read` reads the file as written: its table's rows each a line of their own."""
+    text = (
+        "Scenario Outline: Car pulls out of a minor road on the left\n"
+        "  Given the ego drives at <v_ego> km/h on a rural main road\n"
+        "  When a car pulls out of the minor road on the left <d> m ahead\n\n"
+        "  Examples:\n    | v_ego | d  |\n    | 70    | 45 |\n"
+    )
+    assert _ego(readable_description(text)) == pytest.approx(70 * KPH) == pytest.approx(_ego(text))
