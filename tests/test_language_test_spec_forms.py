@@ -301,3 +301,38 @@ def test_a_command_that_is_not_the_ego_s_is_left_as_it_is(text):
 )
 def test_words_of_a_test_said_in_a_story_leave_its_outcome_as_told(text, intent):
     assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "REQ-41: When a car in the right lane changes into the ego lane 25 m ahead, the ACC shall reduce speed "
+        "without triggering a collision warning.",
+        "TC-12 | bus pulls out of a stop on the right 60 m ahead, ego 50 km/h | Expected: gentle decel, "
+        "max 1.5 m/s2, no takeover",
+        "SR-7: When a walker steps onto the zebra ahead while the ego approaches at 20 mph, the system shall "
+        "bring the ego to a controlled stop before the line.",
+        "While the ego follows a tractor at 40 km/h on a country lane, the pilot shall keep the set time gap of 2 s.",
+        "Postconditions: the ego has passed the cyclist riding at the kerb without FCW.",
+    ],
+    ids=["without-collision-warning", "gentle-decel", "controlled-stop", "keep-the-gap", "without-fcw"],
+)
+def test_an_expected_everyday_response_of_the_ego_is_a_safe_pass(text):
+    """A requirement or expected result that the ego responds as in everyday driving (smoothly, to a
+    controlled stop, keeping its gap, with no warning of its own) makes the case a safe pass."""
+    assert read(text).intent == "safe"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A scooter shot out without warning 8 m ahead of me and I slowed smoothly, but still clipped him.",
+        "Expected: the AEB performs an emergency stop without a collision warning when the child runs out.",
+        "The van ahead slowed smoothly, then a cyclist cut in and I braked hard, stopping a foot short.",
+        "Expected result: the ego brakes smoothly but the e-scooter still hits its front wing.",
+        "REQ-9: When a lorry cuts in 6 m ahead, the AEB shall brake hard to avoid contact without a takeover request.",
+    ],
+    ids=["story-not-expected", "emergency-stop", "another-slows-smoothly", "contact-said", "hard-in-the-sentence"],
+)
+def test_a_smooth_or_silent_response_said_outside_an_expectation_or_beside_a_hard_one_is_no_safe_pass(text):
+    assert read(text).intent != "safe"

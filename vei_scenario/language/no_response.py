@@ -1,5 +1,8 @@
 """A test's expected result that the ego's systems stay quiet: "Expected result: no FCW, no AEB",
-"Then the AEB shall not activate", "no warning shall be issued", "no ACC braking expected".
+"Then the AEB shall not activate", "no warning shall be issued", "no ACC braking expected", or that
+they respond only as in everyday driving: "the ACC shall reduce speed without triggering a collision
+warning", "Expected: smooth decel", "the system shall bring the ego to a controlled stop", "the ACC
+shall maintain the set time gap".
 
 Why: a false-positive test states its outcome this way. The road user is there, does its thing and
 is no threat; the case passes when nothing of the ego's reacts. Read as an outcome cue of its own
@@ -10,7 +13,9 @@ requirement that the ego brake ("the SuT shall brake") or a near miss said besid
 Only an expectation: the sentence, or the label just before it ("Expected result:"), says what is
 expected or required. Only the ego's systems and responses: a road user "with no warning" or
 "without warning" is a sudden act, and "no driver intervention" or "no driver braking" is how the
-test is set up (the system must do the work), not its outcome."""
+test is set up (the system must do the work), not its outcome. "Without warning" alone is a road
+user's sudden act too; only "without" a warning of the ego's systems ("without a collision warning",
+"without FCW", "without a takeover request") is its quiet."""
 
 from __future__ import annotations
 
@@ -20,7 +25,7 @@ from vei_scenario.language.clauses import split
 #: "Then ... shall").
 _EXPECTING = frozenset(
     ("expected", "expect", "expects", "expectation", "criteria", "criterion", "shall", "acceptance", "requirement",
-     "required")
+     "required", "nominal", "postcondition", "postconditions")
 )  # fmt: skip
 #: "Pass" frames an expectation only as a label or a condition ("Pass: ...", "pass if ...", "pass
 #: criteria"), not as a verb of passing.
@@ -44,7 +49,20 @@ _QUALIFIERS = frozenset(
 #: Verbs of a system's response, denied after "shall not" / "should not" / "must not".
 _RESPONDING = frozenset(("activate", "trigger", "intervene", "warn", "brake", "react", "fire", "issue", "alert"))
 #: The ego's systems, as the subject of a denied response.
-_SYSTEMS = frozenset(("aeb", "aebs", "fcw", "acc", "system", "function", "feature", "ads", "adas", "alks"))
+_SYSTEMS = frozenset(
+    ("aeb", "aebs", "fcw", "acc", "system", "function", "feature", "ads", "adas", "alks", "planner", "controller",
+     "pilot", "assistant")
+)  # fmt: skip
+#: Warnings of the ego's systems, after "without" ("without triggering a collision warning", "without
+#: FCW", "without a takeover request"); "without warning" alone is anyone's.
+_OWN_WARNINGS = frozenset(("collision", "fcw", "aeb", "aebs", "takeover", "take-over", "tor"))
+#: Words between "without" and the warning ("without triggering a ...", "without issuing any ...").
+_WITHOUT_FILLERS = frozenset(("triggering", "issuing", "raising", "a", "an", "any"))
+#: Words that say a response of everyday driving ("smooth decel", "comfortable braking", "a controlled
+#: stop", "adapt speed smoothly").
+_COMFORTABLE = frozenset(("smooth", "smoothly", "comfortable", "comfortably", "gentle", "gently", "moderate"))
+#: Words that say the ego's response was hard after all, in the same sentence.
+_HARD = frozenset(("hard", "harsh", "emergency", "full", "abrupt", "abruptly", "sharp", "sharply", "critical"))
 _SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
 
 
@@ -63,11 +81,30 @@ def _quiet_said(words: list[str]) -> list[str] | None:
             if words[j + 1 : j + 2] in (["from"], ["by"], ["came"], ["was"]):
                 continue  # ("no warning from the car", "no warning came": a road user's, or a story's)
             return words[k : j + 1]
+        if w == "without" and not set(words) & _HARD:  # (not "an emergency stop without a collision warning")
+            j = k + 1
+            while j < len(words) and j <= k + 3 and words[j] in _WITHOUT_FILLERS:
+                j += 1
+            if j < len(words) and words[j] in _OWN_WARNINGS:
+                return words[k : j + 1]
         if w in ("shall", "should", "must") and words[k + 1 : k + 2] == ["not"]:
             subject = words[max(0, k - 2) : k]
             verb = words[k + 2 : k + 3]
             if set(subject) & _SYSTEMS and verb and verb[0] in _RESPONDING:
                 return words[max(0, k - 2) : k + 3]
+    return None
+
+
+def _comfort_said(words: list[str]) -> list[str] | None:
+    """The words that say the ego responds as in everyday driving ("smooth decel", "a controlled stop",
+    "maintain the set time gap"), where nothing in the sentence says it was hard; or None."""
+    if set(words) & _HARD:
+        return None
+    for k, w in enumerate(words):
+        if w in _COMFORTABLE or (w == "controlled" and words[k + 1 : k + 2] in (["stop"], ["deceleration"])):
+            return words[k : k + 2]
+        if w in ("maintain", "maintains", "keep", "keeps", "re-establish") and "gap" in words[k + 1 : k + 6]:
+            return words[k : k + 1 + words[k + 1 : k + 6].index("gap") + 1]
     return None
 
 
@@ -86,7 +123,7 @@ def no_response_expected(tokens: list[str]) -> str | None:
     for words, _ in split(tokens, _SENTENCE_ENDS):
         framed = _framed(words) or (previous and previous[-1] == ":" and _framed(previous))
         if framed:
-            quiet = _quiet_said(words)
+            quiet = _quiet_said(words) or _comfort_said(words)
             if quiet:
                 return " ".join(quiet)
         previous = words
