@@ -152,3 +152,38 @@ def test_a_ticket_reads_its_road_user_once(text: str, expected: list[str]) -> No
 )
 def test_near_misses_keep_their_road_users(text: str, expected: list[str]) -> None:
     assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "How do I make an e-scooter cut in front of the ego at 25 km/h?\n\nThe ego drives at 40 km/h in the"
+            " right lane. An e-scooter rides in the bike lane a bit ahead and should swerve into the ego's lane"
+            " 10 m in front of it. Thanks!",
+            ["e-scooter"],
+        ),
+        (
+            "Why does my cyclist never turn across the ego?\n\nA cyclist comes the other way and should turn left"
+            " into the side road right in front of the ego, which goes straight on at 30 km/h.",
+            ["bicycle"],
+        ),
+    ],
+    ids=["how-do-i", "why-does-my"],
+)
+def test_a_question_set_over_a_post_as_its_title_names_the_body_s_road_user(text: str, expected: list) -> None:
+    """A forum post's or an issue's title asks for what its body then tells: its road user is the body's."""
+    assert kinds(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Did you see the cyclist?\nHe came out of a side road on the left right in front of my car at 20 km/h.",
+        "Did you see that van?\n\n",
+        "Why did the cyclist swerve into my lane 10 m ahead when I was doing 30 mph.\n\nI braked hard.",
+    ],
+    ids=["no-blank-line", "no-body", "ends-as-a-sentence"],
+)
+def test_a_question_with_no_body_set_apart_is_no_title(text: str) -> None:
+    assert _end(text) is None

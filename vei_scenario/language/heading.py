@@ -20,8 +20,10 @@ stands there, whoever names it).
 A heading is the text's first line when more lines follow it, it does not end as a sentence or a
 salutation does (a full stop, a question, a colon, a comma), no subject pronoun tells someone's act in
 it ("we went", "I braked": a first sentence written without its stop), and the body after it is the
-longer. The body's road user is the heading's told again only where the body brings it in as new
-("a", "an", "two"): one it names as one more ("another", "a second") is another, and one it names as
+longer. A question set over its body by a blank line is a heading too, as a forum post's or an issue's
+title is ("How do I make an e-scooter cut in at 30 km/h?"): whoever asks is no one of the scene.
+The body's road user is the heading's told again only where the body brings it in as new ("a", "an",
+"two"): one it names as one more ("another", "a second") is another, and one it names as
 said before ("the taxi", or bare as notes write it) is the heading's own. A heading's road user of a
 kind the body never brings in stays, and so does one named as someone's ("Dave's van": the writer's).
 """
@@ -55,6 +57,14 @@ class _Named(Protocol):
     counted: bool
 
 
+def _titled_question(head: str, rest: str) -> bool:
+    """Whether the first line ``head`` is a question set over its body by a blank line (``rest``: the
+    text after the line's break), as a forum post's or an issue's title is: it asks for what the body
+    then tells ("How do I make a cyclist turn across the ego?"), and the one who asks is no one of the
+    scene."""
+    return head.endswith("?") and rest.lstrip(" \t").startswith("\n")
+
+
 def _heading_and_body(text: str) -> tuple[str, str] | None:
     """(the heading line, the body after it) of ``text``, or None when its first line is no heading."""
     lines = text.strip().split("\n", 1)
@@ -62,6 +72,8 @@ def _heading_and_body(text: str) -> tuple[str, str] | None:
         return None
     head, body = lines[0].strip(), lines[1].strip()
     words = _WORD.findall(head.lower())
+    if words and body and _titled_question(head, lines[1]):
+        return head, body  # ("How do I make an e-scooter cut in at 30 km/h?" over a post that tells it)
     if not words or not body or _SENTENCE_END.search(head) or SUBJECT_PRONOUNS & set(words):
         return None
     if len(_WORD.findall(body.lower())) <= len(words):
