@@ -301,12 +301,25 @@ def test_vei_describe_keeps_breaks_that_end_or_open_and_joins_wrapped_lines(text
             "And a van parks on the right\n\n  # our own name for it\n  Scenario: x",
             "And a van parks on the right\n\n# our own name for it\nScenario: x",
         ),
-        ("> what did the lorry do\nIt pulled out", "> what did the lorry do\nIt pulled out"),
-        ("Near miss at the school\n\n\n\na boy ran out", "Near miss at the school\n\na boy ran out"),
+        ("> what did the lorry do\nIt pulled out", "what did the lorry do\nIt pulled out"),
+        ("> the car in front of me\n> braked hard", "the car in front of me braked hard"),
+        ("the car\n\nahead of me braked hard", "the car ahead of me braked hard"),
+        ("it was going at\n>50 km/h", "it was going at >50 km/h"),
+        ("Near miss at the school\n\n\n\nA boy ran out", "Near miss at the school\n\nA boy ran out"),
+        ("## ACC test\n\n**Purpose:** follow a van", "## ACC test\n\n**Purpose:** follow a van"),
     ],
-    ids=["table-rows", "comment-after-blank-line", "quoted-line", "blank-lines-as-one"],
+    ids=[
+        "table-rows",
+        "comment-after-blank-line",
+        "quoted-line",
+        "quoted-wrapped-lines",
+        "wrapped-over-a-blank-line",
+        "more-than",
+        "blank-lines-as-one",
+        "markdown-title",
+    ],
 )
-def test_vei_describe_keeps_rows_comments_quotes_and_paragraphs(text, said):
+def test_vei_describe_keeps_rows_comments_and_paragraphs_and_reads_quotes_as_text(text, said):
     assert readable_description(text) == said
 
 

@@ -434,8 +434,20 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "I drove down the high street. A cyclist waited at the lights and then rode out in front of me.",
         "I stood on the brakes as a cyclist came past me and cut in.",
         "A van cut in front of me and I waited for it to go, then drove on at 30 mph.",
+        "I waited too long to brake and ran into the back of the van in front.",
+        "I waited for a gap in the traffic, pulled out, and a motorbike hit my side.",
+        "We idled through the car park when a child ran out in front of us.",
+        "I stood up on the pedals as the cyclist ahead braked, and hit him.",
     ],
-    ids=["another-waited", "stood-on-the-brakes", "waited-after-another-acts"],
+    ids=[
+        "another-waited",
+        "stood-on-the-brakes",
+        "waited-after-another-acts",
+        "waited-too-long",
+        "waited-for-a-gap",
+        "idled-through",
+        "stood-up",
+    ],
 )
 def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):
     assert ego_kph(text) != 0

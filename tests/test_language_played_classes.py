@@ -569,3 +569,31 @@ def test_a_bicycle_coming_up_behind_an_ego_waiting_at_the_lights_rides_at_a_ride
     for seed in range(5):
         reading = Reading(map_kind="crossroad", lanes=1, ego_speed_mps=0.0, actors=[rider])
         assert float(sample_layers(reading, "test", seed)["adversaries"][0]["speed_mps"]) < 7.0
+
+
+@pytest.mark.parametrize(
+    ("speed", "kind"), [(-0.6, "bicycle"), (-1.3, "bicycle"), (1.4, "bicycle"), (-0.6, "e-scooter")]
+)
+def test_a_rider_coming_up_behind_at_a_speed_word_or_a_low_speed_is_faster_than_the_ego(speed, kind):
+    """ "came up behind me slowly", "... fast", "... at 5 km/h": the rider is still faster than an ego of
+    unsaid speed (a speed word is a factor on the rider's default speed, not its top speed; a low stated
+    speed bounds the ego below it)."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec(kind, "behind", None, speed, [("along_road", {}, None, "sequence")])
+    layers = sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider]), "test", 0)
+    assert float(layers["ego"]["speed_mps"]) < float(layers["adversaries"][0]["speed_mps"])
+
+
+def test_a_rider_behind_a_scene_ahead_does_not_set_the_ego_s_pace():
+    """ "A cyclist behind me, and the car ahead braked hard": the scene is the car's; the ego keeps the
+    road's pace, as it does with no rider."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    rider = ActorSpec("bicycle", "behind", None, None, [("along_road", {}, None, "sequence")])
+    lead = ActorSpec("car", "ahead", None, None, [("sudden_stop", {}, None, "sequence")])
+    alone = sample_layers(Reading(map_kind="straight", lanes=1, actors=[lead]), "test", 0)
+    both = sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider, lead]), "test", 0)
+    assert both["ego"]["speed_mps"] == alone["ego"]["speed_mps"]

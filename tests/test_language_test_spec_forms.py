@@ -336,3 +336,25 @@ def test_an_expected_everyday_response_of_the_ego_is_a_safe_pass(text):
 )
 def test_a_smooth_or_silent_response_said_outside_an_expectation_or_beside_a_hard_one_is_no_safe_pass(text):
     assert read(text).intent != "safe"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A boy runs out between parked cars 12 m ahead of the ego at 30 km/h. Expected: the AEB activates and"
+        " the ego comes to a controlled stop.",
+        "A car ahead at 70 km/h stops suddenly. Expected result: after the FCW the ego makes a controlled stop.",
+        "A van cuts in 6 m ahead. Expected: the ego avoids it with moderate braking and an evasive swerve.",
+        "A walker crosses 20 m ahead of the ego at 40 km/h. Expected: the ego keeps a gap of at least 1 m to"
+        " the walker.",
+        "I expected the van to keep its gap, but it braked hard 8 m ahead of me at 50 km/h.",
+        "The lead car brakes at 8 m/s2. The planner shall not brake later than 0.5 s after it.",
+        "The assistant shall not brake unless the TTC to the cyclist ahead is below 2 s.",
+    ],
+    ids=["aeb-activates", "after-the-fcw", "evasive", "least-distance", "i-expected", "not-later-than", "unless"],
+)
+def test_a_response_beyond_everyday_driving_a_bound_or_a_story_s_expectation_is_no_safe_pass(text):
+    """A smooth word beside a warning, the emergency brake or an evasive move, a least distance to
+    someone, a story's "I expected", and a bound on braking ("not later than", "unless") are no
+    expected quiet."""
+    assert read(text).intent != "safe"

@@ -35,28 +35,32 @@ def plain_text(text: str) -> str:
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 #: A line's end that ends its sentence, field or table row, where the break after it stays.
 _BREAK_KEPT = re.compile(r"[.!?:;)\]|]$")
-#: A line's start that opens an item, a speaker's turn, a sentence, a table's row, a comment or heading, a
-#: tag or a quoted line ("- ", "2) ", "CT: ", "A van ...", "| 70 |", "# note", "@urban", "> you said"), where
-#: the break before it stays; a wrapped line goes on in lower case ("came\nout of a side road").
+#: A line's start that opens an item, a speaker's turn, a sentence, a table's row, a comment or heading,
+#: or a tag ("- ", "2) ", "CT: ", "A van ...", "| 70 |", "# note", "@urban"), where the break before it
+#: stays; a wrapped line goes on in lower case ("came\nout of a side road").
 _LINE_OPENS = re.compile(
-    r"(?:[-*\u2022\u00b7\u2013]\s|\d{1,2}[.)]\s|[^\W\d_][\w.'/-]*(?: [\w.'/-]+){0,2}:|[A-Z0-9\[|#@>])"
+    r"(?:[-*\u2022\u00b7\u2013]\s|\d{1,2}[.)]\s|[^\W\d_][\w.'/-]*(?: [\w.'/-]+){0,2}:|[A-Z0-9\[|#@])"
 )
+#: The marks of a quoted mail's line ("> ", ">> "): the quote is the text ("> yesterday the car in\n> front
+#: of me braked"); ">50 km/h", with no space, is "more than".
+_QUOTE_MARKS = re.compile(r"^(?:>[ \t]?)*>[ \t]+")
 
 
 def readable_description(text: str) -> str:
-    """The description to read: :func:`plain_text` of each of ``text``'s lines, a run of blank lines
-    kept as one; a VeiInputError when nothing is left to read (empty, blank, or no letter or digit at
-    all) or when it is longer than :data:`MAX_DESCRIPTION`. A line break stays where it ends a sentence,
-    a field or a table's row, or opens an item, a speaker's turn, a sentence, a row, a comment or a
-    quoted line: a pasted list, form, transcript, feature file or mail says by them where an item or a
-    turn ends, and the reader reads them so. A blank line ends a paragraph (a heading over its body, a
-    table after its outline). A break inside a sentence (a text wrapped at a width: "came" at one line's
-    end, "out of a side road" at the next) is a space. Why: ``vei describe`` reads the text the way the
-    library's :func:`~vei_scenario.language.reader.read` is measured on."""
+    """The description to read: :func:`plain_text` of each of ``text``'s lines; a VeiInputError when
+    nothing is left to read (empty, blank, or no letter or digit at all) or when it is longer than
+    :data:`MAX_DESCRIPTION`. A line break stays where it ends a sentence, a field or a table's row, or
+    opens an item, a speaker's turn, a sentence, a row or a comment: a pasted list, form, transcript or
+    feature file says by them where an item or a turn ends, and the reader reads them so. A blank line
+    stays, as one, before a line that does not go on in lower case (a heading over its body, a table
+    after its outline, "**Summary**" under a title). A break inside a sentence (a text wrapped at a
+    width: "came" at one line's end, "out of a side road" at the next, with or without a blank line
+    between) is a space, and a quoted mail's marks ("> ") go: the quote is the text. Why: ``vei
+    describe`` reads the text the way :func:`~vei_scenario.language.reader.read` is measured on."""
     lines: list[str] = []
     after_blank: list[bool] = []  # (whether a blank line stands before each line kept)
     raw_prev = ""
-    for line in map(plain_text, _LINE_BREAK.split(text)):
+    for line in (plain_text(_QUOTE_MARKS.sub("", raw)) for raw in _LINE_BREAK.split(text)):
         if line:
             after_blank.append(bool(lines) and not raw_prev)
             lines.append(line)
@@ -65,7 +69,9 @@ def readable_description(text: str) -> str:
         line
         if k == 0
         else (
-            "\n\n" if after_blank[k] else "\n" if _BREAK_KEPT.search(lines[k - 1]) or _LINE_OPENS.match(line) else " "
+            ("\n\n" if after_blank[k] else "\n")
+            if _BREAK_KEPT.search(lines[k - 1]) or _LINE_OPENS.match(line) or (after_blank[k] and not line[0].islower())
+            else " "
         )
         + line
         for k, line in enumerate(lines)

@@ -63,7 +63,31 @@ _WITHOUT_FILLERS = frozenset(("triggering", "issuing", "raising", "a", "an", "an
 _COMFORTABLE = frozenset(("smooth", "smoothly", "comfortable", "comfortably", "gentle", "gently", "moderate"))
 #: Words that say the ego's response was hard after all, in the same sentence.
 _HARD = frozenset(("hard", "harsh", "emergency", "full", "abrupt", "abruptly", "sharp", "sharply", "critical"))
+#: Words of a response beyond everyday driving (a warning, the emergency brake, an evasive move, a
+#: takeover), which, said and not denied beside a smooth one, leave the outcome to the rest of the text.
+_BEYOND_EVERYDAY = frozenset(
+    ("aeb", "aebs", "fcw", "warning", "warnings", "intervention", "interventions", "activates", "evasive", "swerve",
+     "swerves", "swerving", "steer", "steers", "steering", "takeover", "take-over", "tor", "avoid", "avoids",
+     "avoiding", "avoidance")
+)  # fmt: skip
+#: Words that deny the response after them ("no FCW", "without a warning", "not ... takeover").
+_DENIALS = frozenset(("no", "without", "not", "never"))
+#: Words after a denied response that make it a bound, not its absence ("shall not brake later than 1 s",
+#: "shall not brake unless the TTC ...").
+_BOUNDS = frozenset(
+    ("later", "earlier", "harder", "stronger", "more", "less", "unless", "until", "before", "than", "above", "beyond")
+)  # fmt: skip
+#: Who may say "expected" of a story ("I expected the car to stop"): then it frames no requirement.
+_EXPECTERS = frozenset(("i", "we", "he", "she", "they", "you"))
 _SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
+
+
+def _beyond_everyday(words: list[str]) -> bool:
+    """Whether ``words`` say the ego's response was hard or more than everyday driving (a warning, the
+    emergency brake, an evasive move, a takeover), not denied ("no FCW", "without any warning")."""
+    if set(words) & _HARD:
+        return True
+    return any(w in _BEYOND_EVERYDAY and not set(words[max(0, k - 4) : k]) & _DENIALS for k, w in enumerate(words))
 
 
 def _quiet_said(words: list[str]) -> list[str] | None:
@@ -81,7 +105,7 @@ def _quiet_said(words: list[str]) -> list[str] | None:
             if words[j + 1 : j + 2] in (["from"], ["by"], ["came"], ["was"]):
                 continue  # ("no warning from the car", "no warning came": a road user's, or a story's)
             return words[k : j + 1]
-        if w == "without" and not set(words) & _HARD:  # (not "an emergency stop without a collision warning")
+        if w == "without" and not _beyond_everyday(words):  # (not "an emergency stop without a collision warning")
             j = k + 1
             while j < len(words) and j <= k + 3 and words[j] in _WITHOUT_FILLERS:
                 j += 1
@@ -90,29 +114,33 @@ def _quiet_said(words: list[str]) -> list[str] | None:
         if w in ("shall", "should", "must") and words[k + 1 : k + 2] == ["not"]:
             subject = words[max(0, k - 2) : k]
             verb = words[k + 2 : k + 3]
-            if set(subject) & _SYSTEMS and verb and verb[0] in _RESPONDING:
+            if set(subject) & _SYSTEMS and verb and verb[0] in _RESPONDING and not set(words[k + 3 : k + 5]) & _BOUNDS:
                 return words[max(0, k - 2) : k + 3]
     return None
 
 
 def _comfort_said(words: list[str]) -> list[str] | None:
     """The words that say the ego responds as in everyday driving ("smooth decel", "a controlled stop",
-    "maintain the set time gap"), where nothing in the sentence says it was hard; or None."""
-    if set(words) & _HARD:
+    "maintain the set time gap"), where nothing in the sentence says it did more (:func:`_beyond_everyday`);
+    or None. A gap kept is the following gap ("time gap", "set gap", "selected gap"), not a least distance
+    to someone ("keep a gap of at least 0.5 m to the pedestrian")."""
+    if _beyond_everyday(words):
         return None
     for k, w in enumerate(words):
         if w in _COMFORTABLE or (w == "controlled" and words[k + 1 : k + 2] in (["stop"], ["deceleration"])):
             return words[k : k + 2]
         if w in ("maintain", "maintains", "keep", "keeps", "re-establish") and "gap" in words[k + 1 : k + 6]:
-            return words[k : k + 1 + words[k + 1 : k + 6].index("gap") + 1]
+            said = words[k : k + 1 + words[k + 1 : k + 6].index("gap") + 1]
+            if set(said) & {"time", "set", "selected", "following"}:
+                return said
     return None
 
 
 def _framed(words: list[str]) -> bool:
     """Whether ``words`` say what is expected or required of the ego ("Expected result", "Pass criteria",
     "Pass: ...", "the AEB shall not ...")."""
-    if set(words) & _EXPECTING:
-        return True
+    if any(w in _EXPECTING and not (k and words[k - 1] in _EXPECTERS) for k, w in enumerate(words)):
+        return True  # (not a story's "I expected the car to stop")
     return any(w == "pass" and words[k + 1 : k + 2] and words[k + 1] in _PASS_FRAMES for k, w in enumerate(words))
 
 

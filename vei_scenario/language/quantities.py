@@ -1457,8 +1457,8 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
             still = (
-                m.words in STILL_WORDS or m.words in _STANDING or m.words in _STATIVE_PAST
-            )  # ("was stationary", "we were stood at the lights")
+                m.words in STILL_WORDS or m.words in _STANDING or (k > 0 and _stative_past(said[k - 1], m, tokens))
+            )  # ("was stationary", "we were stood at the lights", "I waited at the lights")
             denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
             if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
@@ -1475,7 +1475,7 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                     or denied
                     or _verbless_state(ego, m)
                     or _stopped_fully(m, tokens)
-                    or _stative_past(ego, m)
+                    or _stative_past(ego, m, tokens)
                 )
             ):
                 if not acted or ego.prev in _BACKGROUND:
@@ -1548,11 +1548,19 @@ def _subjectless_state(m, after) -> bool:
 _STATIVE_PAST = frozenset({"waited", "sat", "stood", "queued", "idled"})
 
 
-def _stative_past(ego, state) -> bool:
-    """Whether a verb of standing in the simple past follows the ego's name right after it ("While I
-    waited at the lights, a cyclist ...", "I sat at the lights when a van hit me"): the past of
-    waiting, sitting or queuing is a state, as "was waiting" is."""
-    return state.words in _STATIVE_PAST and ego.end == state.start
+def _stative_past(ego, state, tokens: list[str]) -> bool:
+    """Whether a verb of standing in the simple past follows the ego's name right after it, and then
+    where it stood ("While I waited at the lights, a cyclist ...", "I sat at the lights when a van hit
+    me", "we queued behind a bus"): the past of waiting, sitting or queuing at a place is a state, as
+    "was waiting" is. Not a wait for something to be done ("I waited too long to brake", "I waited for
+    a gap and pulled out"), nor a going ("we idled through the car park", "I stood up on the pedals")."""
+    after = tokens[state.end] if state.end < len(tokens) else ""
+    return state.words in _STATIVE_PAST and ego.end == state.start and after in _WHERE_IT_STOOD
+
+
+#: Words after a verb of standing that say where the one stood ("waited at", "sat in the queue",
+#: "queued behind", "stood still").
+_WHERE_IT_STOOD = frozenset({"at", "in", "behind", "still", "stationary"})
 
 
 def _verbless_state(ego, state) -> bool:

@@ -29,7 +29,7 @@ from vei_scenario.language.placement import (
     lane_id,
 )
 from vei_scenario.language.reader import read as read_text
-from vei_scenario.language.reading import Reading
+from vei_scenario.language.reading import Reading, stands_there
 from vei_scenario.language.scenario_writer import (
     DEFAULT_RATE_HZ,
     EGO_KIND,
@@ -130,7 +130,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         drawn = _u(rng, lo, hi)
         ego_speed = reading.scene_pace_mps if reading.scene_pace_mps is not None else drawn  # (the scene's one)
     if reading.ego_speed_mps is None:
-        ego_speed = min([ego_speed] + [_passable_mps(a.kind, a.speed_mps) for a in reading.actors if _passes_ego(a)])
+        ego_speed = min([ego_speed] + [_passable_mps(a.kind, a.speed_mps) for a in _passers(reading.actors)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
@@ -340,21 +340,45 @@ PASSING_MARGIN_MPS = 4.0
 
 
 def _passes_ego(spec) -> bool:
-    """Whether the road user must be faster than the ego: it overtakes it, or it is a rider said to come
-    up behind it along the road or through the red ("came up the inside along the kerb")."""
+    return any(b[0] == "overtake" for b in spec.behaviours)
+
+
+def _comes_up_behind(spec) -> bool:
+    """Whether ``spec`` is a rider said to come up behind the ego along the road or through the red
+    ("came up the inside along the kerb")."""
     first = spec.behaviours[0][0] if spec.behaviours else None
-    from_behind = spec.relation == "behind" and spec.facing is None and spec.kind in RIDERS_AT_KERB
-    return any(b[0] == "overtake" for b in spec.behaviours) or (
-        from_behind and first in ("along_road", "run_red_light")
+    return (
+        spec.relation == "behind"
+        and spec.facing is None
+        and spec.kind in RIDERS_AT_KERB
+        and first in ("along_road", "run_red_light")
     )
+
+
+def _passers(actors: list) -> list:
+    """The road users that must be faster than an ego whose speed the text leaves open: each that
+    overtakes it, and a rider coming up behind it where the scene is that rider's (every road user
+    there passes the ego or only stands): a rider behind a scene ahead ("a cyclist behind me, and the car
+    ahead braked hard") does not set the ego's pace."""
+    from_behind = [a for a in actors if _comes_up_behind(a)]
+    if not all(_passes_ego(a) or _comes_up_behind(a) or stands_there(a) for a in actors):
+        from_behind = []
+    return [a for a in actors if _passes_ego(a)] + from_behind
 
 
 def _passable_mps(kind: str, speed: float | None = None) -> float:
     """The fastest the ego may go for a road user of ``kind`` to pass it: a bicycle or an e-scooter
     that overtakes ("flies past me on the inside") or comes up behind tells of an ego slower than the
-    rider rides (its stated speed, else its top speed)."""
-    top = TYPES[kind][3] if speed is None or speed <= 0 else min(speed, TYPES[kind][3])
-    return max(top - PASSING_MARGIN_MPS, 2.0)
+    rider rides: its stated speed, a speed word's factor on its default speed ("slowly", "fast": as
+    :func:`sample_layers` draws it), else its top speed; and at most half a low stated speed."""
+    top = TYPES[kind][3]
+    if speed is None:
+        rides = top
+    elif speed < 0:  # (a speed word: a factor on the default speed)
+        rides = min(_default_speed(kind, "behind", top) * -speed, top)
+    else:
+        rides = min(speed, top)
+    return max(rides - PASSING_MARGIN_MPS, min(2.0, rides / 2.0))
 
 
 #: Seconds of head-on closing a wrong-way road user needs beyond its swerve, drifting over from its own
