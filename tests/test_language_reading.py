@@ -102,6 +102,7 @@ def test_a_batch_of_which_no_scenario_can_be_written_exits_1_with_the_first_reas
     captured = capsys.readouterr()
     assert "no scenario could be written (1 of 1 failed); scenario_000:" in captured.err
     assert "needs a junction" in captured.err and "scenario(s): crash rate" not in captured.out
+    assert not (tmp_path / "out").exists()  # (a failed batch leaves no output behind)
 
 
 # --- the stated outcome ------------------------------------------------------------------------------

@@ -104,7 +104,7 @@ def describe_command(args) -> int:
         first = next(r for r in records if not r.ok)
         print(
             f"vei: error: no scenario could be written ({s['failed']} of {s['failed']} failed); "
-            f"scenario_{first.index:03d}: {first.error}",
+            f"scenario_{first.index:03d}: {first.error}; nothing was written",
             file=sys.stderr,
         )
         return 1

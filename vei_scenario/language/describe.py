@@ -243,7 +243,9 @@ def describe_batch(
     progress: Callable[[int, int], None] | None = None,
     reading: dict | None = None,
 ) -> tuple[list[ScenarioRecord], dict]:
-    """Generate, run and score ``count`` scenarios (layers of scenario i: ``make_layers(i)``)."""
+    """Generate, run and score ``count`` scenarios (layers of scenario i: ``make_layers(i)``), and write
+    them to ``out_dir`` (where given) when at least one could be written: a batch of which none could
+    is a failure, which leaves no output behind."""
     all_layers = []
     for i in range(count):
         layers = make_layers(i)
@@ -276,7 +278,7 @@ def describe_batch(
             if progress:
                 progress(len(records), len(tasks))
     doc = batch_document(description, backend, seed, refine, records, reading)
-    if out_dir is not None:
+    if out_dir is not None and any(r.ok for r in records):  # (a batch of which none was written failed: no output)
         from vei_scenario.language.report_html import summary_html
 
         files = OutputSet()
