@@ -451,3 +451,17 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
 )
 def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):
     assert ego_kph(text) != 0
+
+
+# --- a unit "an hour" glued to its number: "40km an hour" -------------------------------------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was going 40km an hour when a cyclist pulled out of a side road.", 40),
+        ("Doing maybe 25miles an hour, a van pulled out in front of me.", 25 * 1.609344),
+        ("We were at 60kilometres per hour when the lorry ahead braked hard.", 60),
+    ],
+    ids=["km-an-hour", "miles-an-hour", "kilometres-per-hour"],
+)
+def test_a_unit_an_hour_glued_to_its_number_is_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, rel=1e-3)

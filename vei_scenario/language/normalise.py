@@ -149,8 +149,11 @@ def _km_as_speed(m: re.Match) -> str:
 
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = _UNIT_FORMS + [
-    (re.compile(r"\bmiles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
-    (re.compile(r"\b(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"), "km/h"),
+    (re.compile(r"(?:\b|(?<=\d))miles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
+    (  # (glued to its number too: "40km an hour")
+        re.compile(r"(?:\b|(?<=\d))(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"),
+        "km/h",
+    ),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),
     (_MILEAGE, r"\1\g<2>000"),  # ("has about 380k on it": thousands had, no speed)
     # ("50 k's": spoken km/h; not a video's resolution: "4K dashcam")
