@@ -438,6 +438,9 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "I waited for a gap in the traffic, pulled out, and a motorbike hit my side.",
         "We idled through the car park when a child ran out in front of us.",
         "I stood up on the pedals as the cyclist ahead braked, and hit him.",
+        "I waited at the red light. When it turned green I pulled away and a car ran the red into my side.",
+        "I was waiting at the lights and when they changed I moved off and a walker stepped out in front of me.",
+        "I sat behind the tractor for miles, then overtook it and a car came the other way.",
     ],
     ids=[
         "another-waited",
@@ -447,6 +450,9 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "waited-for-a-gap",
         "idled-through",
         "stood-up",
+        "then-pulled-away",
+        "was-waiting-then-moved-off",
+        "sat-behind-then-overtook",
     ],
 )
 def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):

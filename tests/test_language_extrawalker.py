@@ -168,8 +168,13 @@ def test_near_misses_keep_their_road_users(text: str, expected: list[str]) -> No
             " into the side road right in front of the ego, which goes straight on at 30 km/h.",
             ["bicycle"],
         ),
+        (
+            "Can I make two pedestrians cross in front of the ego?\n\nA pedestrian crosses from the left 20 m"
+            " ahead while another crosses from the right.",
+            ["pedestrian", "pedestrian"],
+        ),
     ],
-    ids=["how-do-i", "why-does-my"],
+    ids=["how-do-i", "why-does-my", "two-in-the-title"],
 )
 def test_a_question_set_over_a_post_as_its_title_names_the_body_s_road_user(text: str, expected: list) -> None:
     """A forum post's or an issue's title asks for what its body then tells: its road user is the body's."""

@@ -597,3 +597,63 @@ def test_a_rider_behind_a_scene_ahead_does_not_set_the_ego_s_pace():
     alone = sample_layers(Reading(map_kind="straight", lanes=1, actors=[lead]), "test", 0)
     both = sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider, lead]), "test", 0)
     assert both["ego"]["speed_mps"] == alone["ego"]["speed_mps"]
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter"])
+@pytest.mark.parametrize("relation", ["roadside_right", "roadside_left"])
+def test_a_rider_said_to_stand_at_the_kerb_then_run_the_red_sets_off(kind, relation, tmp_path):
+    """ "A cyclist stopped at the kerb on the right, then ran the red": its stop is the wait before it
+    sets off. Read as a standstill it never ends, it stood at the kerb for the whole run."""
+    import numpy as np
+
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    moves = [("stop", {}, None, "sequence"), ("run_red_light", {}, None, "sequence")]
+    rider = ActorSpec(kind, relation, None, None, moves)
+    layers = sample_layers(Reading(map_kind="crossroad", lanes=1, ego_speed_mps=10.0, actors=[rider]), "test", 0)
+    result = play_layers(layers, tmp_path)
+    trace = result.traces["Adversary1"]
+    assert float(np.hypot(np.ptp(trace.x), np.ptp(trace.y))) > 20.0
+    assert played_problems(result, layers) == []
+
+
+def test_a_red_light_runner_that_never_sets_off_is_a_played_problem(tmp_path):
+    """The played check names a red-light runner that stands where it starts for the whole run."""
+    layers = layers_of(
+        "crossroad",
+        {"placement": "before_junction", "lane": 1, "speed_mps": 10.0, "distance_m": 60.0, "route": "straight"},
+        [
+            {
+                "name": "Adversary1",
+                "type": "bicycle",
+                "spawn": {"relation": "roadside_right", "longitudinal_m": 40.0},
+                "speed_mps": 0.0,
+                "behaviour": {
+                    "sequence": [
+                        {"behaviour": "stop", "config": {}},
+                        {"behaviour": "run_red_light", "config": {"arrival_gap_s": 1.2}},
+                    ]
+                },
+            }
+        ],
+        lanes=1,
+        signals=True,
+    )
+    assert "Adversary1: run_red_light but never set off" in played_problems(play_layers(layers, tmp_path), layers)
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter"])
+def test_a_rider_said_to_come_up_behind_fast_is_no_slower_than_one_with_no_word(kind):
+    """ "came up fast behind me": the speed word is a factor on the pace it comes up at, so it is at
+    least as fast as the same rider with no word, and still faster than the ego."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def layers(speed):
+        rider = ActorSpec(kind, "behind", None, speed, [("along_road", {}, None, "sequence")])
+        return sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider]), "test", 0)
+
+    plain, fast = layers(None), layers(-1.3)
+    assert float(fast["adversaries"][0]["speed_mps"]) >= float(plain["adversaries"][0]["speed_mps"])
+    assert float(fast["ego"]["speed_mps"]) < float(fast["adversaries"][0]["speed_mps"])

@@ -312,14 +312,15 @@ def test_words_of_a_test_said_in_a_story_leave_its_outcome_as_told(text, intent)
         "max 1.5 m/s2, no takeover",
         "SR-7: When a walker steps onto the zebra ahead while the ego approaches at 20 mph, the system shall "
         "bring the ego to a controlled stop before the line.",
-        "While the ego follows a tractor at 40 km/h on a country lane, the pilot shall keep the set time gap of 2 s.",
+        "While the ego follows a tractor at 40 km/h on a country lane, when the tractor turns off, the ACC shall"
+        " adapt speed smoothly.",
         "Postconditions: the ego has passed the cyclist riding at the kerb without FCW.",
     ],
-    ids=["without-collision-warning", "gentle-decel", "controlled-stop", "keep-the-gap", "without-fcw"],
+    ids=["without-collision-warning", "gentle-decel", "controlled-stop", "adapt-speed-smoothly", "without-fcw"],
 )
 def test_an_expected_everyday_response_of_the_ego_is_a_safe_pass(text):
     """A requirement or expected result that the ego responds as in everyday driving (smoothly, to a
-    controlled stop, keeping its gap, with no warning of its own) makes the case a safe pass."""
+    controlled stop, with no warning of its own) makes the case a safe pass."""
     assert read(text).intent == "safe"
 
 
@@ -350,8 +351,26 @@ def test_a_smooth_or_silent_response_said_outside_an_expectation_or_beside_a_har
         "I expected the van to keep its gap, but it braked hard 8 m ahead of me at 50 km/h.",
         "The lead car brakes at 8 m/s2. The planner shall not brake later than 0.5 s after it.",
         "The assistant shall not brake unless the TTC to the cyclist ahead is below 2 s.",
+        "Test conditions shall be: smooth dry asphalt. A child dummy crosses from the nearside at 5 km/h."
+        " Expected result: the vehicle shall stop before the dummy.",
+        "The test shall be run in moderate rain. A walker steps out from behind a parked van 15 m ahead.",
+        "Precondition: the ACC shall maintain the set time gap of 1.8 s. The lead car then brakes at 8 m/s2."
+        " Expected: FCW followed by AEB.",
+        "The test driver shall not brake during the run; the target car cuts in 8 m ahead.",
     ],
-    ids=["aeb-activates", "after-the-fcw", "evasive", "least-distance", "i-expected", "not-later-than", "unless"],
+    ids=[
+        "aeb-activates",
+        "after-the-fcw",
+        "evasive",
+        "least-distance",
+        "i-expected",
+        "not-later-than",
+        "unless",
+        "smooth-asphalt",
+        "moderate-rain",
+        "keeps-the-gap-then-aeb",
+        "a-driver-shall-not-brake",
+    ],
 )
 def test_a_response_beyond_everyday_driving_a_bound_or_a_story_s_expectation_is_no_safe_pass(text):
     """A smooth word beside a warning, the emergency brake or an evasive move, a least distance to

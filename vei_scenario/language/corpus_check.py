@@ -211,6 +211,10 @@ def _ego_frame(result, name: str):
     return dx * c + dy * s, -dx * s + dy * c
 
 
+#: How far a red-light runner goes at the least, in a run's span (m): through a junction.
+_RUNS_AT_LEAST_M = 10.0
+
+
 def played_problems(result, layers: dict) -> list[str]:
     """Did each adversary do what its layers say, in the played run? Checked from the trajectories:
     a stop ends standing, an overtake ends ahead of the ego, a cut-in ends ahead in the ego's lane,
@@ -269,6 +273,8 @@ def played_problems(result, layers: dict) -> list[str]:
                 d = float(to_path[0].min())
                 if d > 3.0:
                     out.append(f"{name}: {crossing} but never within 3 m of the ego's path ({d:.1f} m)")
+        if "run_red_light" in names and float(np.hypot(np.ptp(tr.x), np.ptp(tr.y))) < _RUNS_AT_LEAST_M:
+            out.append(f"{name}: run_red_light but never set off")
         if "turn_into" in names and not ((lon > 0) & (np.abs(lat) < 1.2)).any():
             out.append(f"{name}: turn_into but never ahead in the ego's lane")
         heading = np.abs((tr.yaw - ego.yaw + np.pi) % (2 * np.pi) - np.pi)  # 0: same way, pi: head-on

@@ -119,6 +119,7 @@ def fold_told_again(actors: list, reading: Reading, end: int | None) -> list:
         return actors
     specs = reading.actors
     drop: set[int] = set()
+    taken: set[int] = set()  # (each of the body's road users is one of the heading's, at most)
     for j, a in enumerate(actors):
         if not 0 <= a.named_end <= end or _owned(a):
             continue
@@ -127,6 +128,7 @@ def fold_told_again(actors: list, reading: Reading, end: int | None) -> list:
                 k
                 for k, b in enumerate(actors)
                 if b.named_end > end
+                and k not in taken
                 and _brought_in(b)
                 and specs[k].kind == specs[j].kind
                 and not told_apart(a, b, specs[j], specs[k], summary=True)
@@ -136,4 +138,5 @@ def fold_told_again(actors: list, reading: Reading, end: int | None) -> list:
         if k is not None and not any(s.obstacle in (j, k) for s in specs):
             fold_into(specs[k], specs[j])
             drop.add(j)
+            taken.add(k)
     return without(actors, reading, drop)

@@ -1,8 +1,10 @@
 """A test's expected result that the ego's systems stay quiet: "Expected result: no FCW, no AEB",
 "Then the AEB shall not activate", "no warning shall be issued", "no ACC braking expected", or that
 they respond only as in everyday driving: "the ACC shall reduce speed without triggering a collision
-warning", "Expected: smooth decel", "the system shall bring the ego to a controlled stop", "the ACC
-shall maintain the set time gap".
+warning", "Expected: smooth decel", "the system shall bring the ego to a controlled stop". Not where
+an expected result also has the ego warn, brake in an emergency, swerve or hand over ("Expected: the
+ego decelerates smoothly; if that is not enough, FCW and AEB"). Keeping a time gap is no such result:
+it is how a following test is set up, whatever happens next.
 
 Why: a false-positive test states its outcome this way. The road user is there, does its thing and
 is no threat; the case passes when nothing of the ego's reacts. Read as an outcome cue of its own
@@ -25,7 +27,7 @@ from vei_scenario.language.clauses import split
 #: "Then ... shall").
 _EXPECTING = frozenset(
     ("expected", "expect", "expects", "expectation", "criteria", "criterion", "shall", "acceptance", "requirement",
-     "required", "nominal", "postcondition", "postconditions")
+     "required", "postcondition", "postconditions")
 )  # fmt: skip
 #: "Pass" frames an expectation only as a label or a condition ("Pass: ...", "pass if ...", "pass
 #: criteria"), not as a verb of passing.
@@ -51,7 +53,7 @@ _RESPONDING = frozenset(("activate", "trigger", "intervene", "warn", "brake", "r
 #: The ego's systems, as the subject of a denied response.
 _SYSTEMS = frozenset(
     ("aeb", "aebs", "fcw", "acc", "system", "function", "feature", "ads", "adas", "alks", "planner", "controller",
-     "pilot", "assistant")
+     "assistant")
 )  # fmt: skip
 #: Warnings of the ego's systems, after "without" ("without triggering a collision warning", "without
 #: FCW", "without a takeover request"); "without warning" alone is anyone's.
@@ -77,9 +79,19 @@ _DENIALS = frozenset(("no", "without", "not", "never"))
 _BOUNDS = frozenset(
     ("later", "earlier", "harder", "stronger", "more", "less", "unless", "until", "before", "than", "above", "beyond")
 )  # fmt: skip
+#: What "nominal" frames as expected ("Nominal outcome", "nominal behaviour").
+_OUTCOMES = frozenset(("outcome", "result", "results", "behaviour", "behavior", "response", "reaction"))
+#: Words of the ego's response that a word of everyday driving says the manner of ("smooth decel",
+#: "a gentle stop", "decelerates smoothly", "adapt speed smoothly"), not of the road or the weather.
+_RESPONSE = frozenset(
+    ("decel", "deceleration", "decelerate", "decelerates", "decelerating", "braking", "brake", "brakes", "stop",
+     "stops", "slow", "slows", "slowing", "slowdown", "reaction", "response", "reduction", "adapt", "adapts",
+     "adapting", "reduce", "reduces", "reducing", "speed")
+)  # fmt: skip
 #: Who may say "expected" of a story ("I expected the car to stop"): then it frames no requirement.
 _EXPECTERS = frozenset(("i", "we", "he", "she", "they", "you"))
-_SENTENCE_ENDS = frozenset((".", "!", "?", ";"))
+#: Where a sentence ends (an expectation goes on after a ";": "Expected: a smooth stop; if not, AEB").
+_SENTENCE_ENDS = frozenset((".", "!", "?"))
 
 
 def _beyond_everyday(words: list[str]) -> bool:
@@ -121,18 +133,17 @@ def _quiet_said(words: list[str]) -> list[str] | None:
 
 def _comfort_said(words: list[str]) -> list[str] | None:
     """The words that say the ego responds as in everyday driving ("smooth decel", "a controlled stop",
-    "maintain the set time gap"), where nothing in the sentence says it did more (:func:`_beyond_everyday`);
-    or None. A gap kept is the following gap ("time gap", "set gap", "selected gap"), not a least distance
-    to someone ("keep a gap of at least 0.5 m to the pedestrian")."""
+    "adapt speed smoothly"): a word of everyday manner said of a response, not of the road or the
+    weather ("smooth dry asphalt", "moderate rain"), where nothing in the sentence says the ego did more
+    (:func:`_beyond_everyday`); or None."""
     if _beyond_everyday(words):
         return None
     for k, w in enumerate(words):
-        if w in _COMFORTABLE or (w == "controlled" and words[k + 1 : k + 2] in (["stop"], ["deceleration"])):
-            return words[k : k + 2]
-        if w in ("maintain", "maintains", "keep", "keeps", "re-establish") and "gap" in words[k + 1 : k + 6]:
-            said = words[k : k + 1 + words[k + 1 : k + 6].index("gap") + 1]
-            if set(said) & {"time", "set", "selected", "following"}:
-                return said
+        manner = w in _COMFORTABLE or w == "controlled"
+        of_response = words[k + 1 : k + 2] and words[k + 1] in _RESPONSE and words[k + 1] != "speed"
+        after_response = w != "controlled" and set(words[max(0, k - 2) : k]) & _RESPONSE
+        if manner and (of_response or after_response):
+            return words[max(0, k - 2) : k + 2]
     return None
 
 
@@ -141,6 +152,8 @@ def _framed(words: list[str]) -> bool:
     "Pass: ...", "the AEB shall not ...")."""
     if any(w in _EXPECTING and not (k and words[k - 1] in _EXPECTERS) for k, w in enumerate(words)):
         return True  # (not a story's "I expected the car to stop")
+    if any(w == "nominal" and words[k + 1 : k + 2] and words[k + 1] in _OUTCOMES for k, w in enumerate(words)):
+        return True  # ("Nominal outcome: ...", not "nominal 50 km/h" or "Nominal scenario")
     return any(w == "pass" and words[k + 1 : k + 2] and words[k + 1] in _PASS_FRAMES for k, w in enumerate(words))
 
 
@@ -148,11 +161,17 @@ def no_response_expected(tokens: list[str]) -> str | None:
     """The words of an expected result that the ego's systems stay quiet, or None (see the module).
     ``tokens``: the reader's lowercased tokens, punctuation apart."""
     previous: list[str] = []
+    comfort: list[str] | None = None
+    more = False  # (whether an expected result says the ego does more than everyday driving)
     for words, _ in split(tokens, _SENTENCE_ENDS):
         framed = _framed(words) or (previous and previous[-1] == ":" and _framed(previous))
         if framed:
-            quiet = _quiet_said(words) or _comfort_said(words)
+            quiet = _quiet_said(words)
             if quiet:
                 return " ".join(quiet)
+            comfort = comfort or _comfort_said(words)
+            more = more or _beyond_everyday(words)
         previous = words
-    return None
+    # (an everyday response in one expected result, and a warning or the AEB in another, is no quiet pass:
+    # "Expected: the ACC decelerates smoothly; if that is not enough, FCW and AEB")
+    return " ".join(comfort) if comfort and not more else None

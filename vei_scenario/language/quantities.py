@@ -1478,7 +1478,7 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                     or _stative_past(ego, m, tokens)
                 )
             ):
-                if not acted or ego.prev in _BACKGROUND:
+                if (not acted or ego.prev in _BACKGROUND) and not _sets_off_after(tokens, m.end):
                     return True
     return False
 
@@ -1543,6 +1543,25 @@ def _subjectless_state(m, after) -> bool:
     return not (named is not None and named.value == "ego")
 
 
+#: What the ego says to set off from where it stood ("... then I pulled away", "we moved off and ...").
+_SETTING_OFF = (
+    ("pulled", "away"), ("pulled", "off"), ("pulled", "out"), ("drove", "off"), ("drove", "on"), ("moved", "off"),
+    ("moved", "away"), ("moved", "forward"), ("set", "off"), ("went", "through"), ("crept", "forward"),
+    ("started", "moving"), ("started", "off"), ("overtook",), ("filtered",), ("proceeded",),
+)  # fmt: skip
+
+
+def _sets_off_after(tokens: list[str], start: int) -> bool:
+    """Whether the ego (I, we) is said to set off after the state that ends at ``start`` ("I waited at
+    the red light. When it turned green I pulled away and a car ran the red"): then it moves when the
+    scene happens, and did not stand through it."""
+    for i in range(start, len(tokens)):
+        for phrase in _SETTING_OFF:
+            if tuple(tokens[i : i + len(phrase)]) == phrase and set(tokens[max(start, i - 3) : i]) & {"i", "we"}:
+                return True
+    return False
+
+
 #: Verbs of standing whose simple past is a state the subject was in, not a stop it made ("I waited at
 #: the lights", "we sat in the queue", "I queued at the roundabout"); "I stopped" and "I pulled up" are acts.
 _STATIVE_PAST = frozenset({"waited", "sat", "stood", "queued", "idled"})
@@ -1551,16 +1570,17 @@ _STATIVE_PAST = frozenset({"waited", "sat", "stood", "queued", "idled"})
 def _stative_past(ego, state, tokens: list[str]) -> bool:
     """Whether a verb of standing in the simple past follows the ego's name right after it, and then
     where it stood ("While I waited at the lights, a cyclist ...", "I sat at the lights when a van hit
-    me", "we queued behind a bus"): the past of waiting, sitting or queuing at a place is a state, as
+    me", "we queued in the traffic"): the past of waiting, sitting or queuing at a place is a state, as
     "was waiting" is. Not a wait for something to be done ("I waited too long to brake", "I waited for
-    a gap and pulled out"), nor a going ("we idled through the car park", "I stood up on the pedals")."""
+    a gap and pulled out"), nor a going ("we idled through the car park", "I stood up on the pedals"), nor
+    a place behind someone ("I sat behind the bus for ages, then overtook it": following)."""
     after = tokens[state.end] if state.end < len(tokens) else ""
     return state.words in _STATIVE_PAST and ego.end == state.start and after in _WHERE_IT_STOOD
 
 
 #: Words after a verb of standing that say where the one stood ("waited at", "sat in the queue",
-#: "queued behind", "stood still").
-_WHERE_IT_STOOD = frozenset({"at", "in", "behind", "still", "stationary"})
+#: "stood still").
+_WHERE_IT_STOOD = frozenset({"at", "in", "still", "stationary"})
 
 
 def _verbless_state(ego, state) -> bool:

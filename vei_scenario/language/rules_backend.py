@@ -130,7 +130,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
         drawn = _u(rng, lo, hi)
         ego_speed = reading.scene_pace_mps if reading.scene_pace_mps is not None else drawn  # (the scene's one)
     if reading.ego_speed_mps is None:
-        ego_speed = min([ego_speed] + [_passable_mps(a.kind, a.speed_mps) for a in _passers(reading.actors)])
+        ego_speed = min([ego_speed] + [_passable_mps(a, behind) for a, behind in _passers(reading.actors)])
     ego_speed = min(max(ego_speed, 0.0), MAX_SPEED_MPS)
     weather = reading.weather or rng.choice(["clear", "clear", "cloudy"])
     time = reading.time or f"{rng.randint(7, 18):02d}:{rng.choice([0, 15, 30, 45]):02d}"
@@ -149,6 +149,8 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
     stops_open: set[str] = set()  # (stops whose time the text leaves open)
     for index, spec in enumerate(reading.actors):
         behaviours = spec.behaviours or [("keep_going", {}, None, "sequence")]  # (the reading stays as read)
+        if _waits_then_runs_the_red(spec):
+            behaviours = behaviours[1:]  # (its standing at the kerb is where it starts: it sets off through the red)
         name = f"Adversary{len(adversaries) + 1}"
         nodes = []
         first_cfg: dict = {}
@@ -174,7 +176,11 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             or getattr(first, "DEFAULT_SPAWN", {}).get("relation", "ahead")
         )
         given_speed = spec.speed_mps
-        if given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
+        if given_speed is not None and given_speed < 0 and _comes_up_behind(spec):
+            # a speed word of a rider coming up behind ("came up fast behind me"): a factor on the pace it
+            # comes up at, within its top speed (on the 4 m/s default, "fast" was slower than no word)
+            given_speed = min(_coming_up_pace(spec.kind, None, ego_speed) * -given_speed, TYPES[spec.kind][3])
+        elif given_speed is not None and given_speed < 0:  # a speed word: a factor on the default speed
             given_speed = _default_speed(spec.kind, relation, ego_speed) * -given_speed
         if given_speed is None and ego_speed == 0.0 and relation == "behind" and not vulnerable(spec.kind):
             given_speed = _u(rng, lo, hi)  # (coming up behind an ego at rest: at the road's pace, not the ego's)
@@ -185,7 +191,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             and first.NAME in DRIVES
             and ego_speed == 0.0
             and vulnerable(spec.kind)
-            and relation != "behind"  # (one coming up behind rides at its own pace: _coming_up_pace)
+            and not (relation == "behind" and _comes_up_behind(spec))  # (it rides at its own pace: _coming_up_pace)
         ):
             given_speed = min(_u(rng, lo, hi), TYPES[spec.kind][3])  # (not the ego's standstill: a rider's pace)
         if given_speed is None and first.NAME == "wrong_way":
@@ -360,22 +366,24 @@ def _passers(actors: list) -> list:
     overtakes it, and a rider coming up behind it where the scene is that rider's (every road user
     there passes the ego or only stands): a rider behind a scene ahead ("a cyclist behind me, and the car
     ahead braked hard") does not set the ego's pace."""
-    from_behind = [a for a in actors if _comes_up_behind(a)]
+    from_behind = [(a, True) for a in actors if _comes_up_behind(a)]
     if not all(_passes_ego(a) or _comes_up_behind(a) or stands_there(a) for a in actors):
         from_behind = []
-    return [a for a in actors if _passes_ego(a)] + from_behind
+    return [(a, False) for a in actors if _passes_ego(a)] + from_behind
 
 
-def _passable_mps(kind: str, speed: float | None = None) -> float:
-    """The fastest the ego may go for a road user of ``kind`` to pass it: a bicycle or an e-scooter
-    that overtakes ("flies past me on the inside") or comes up behind tells of an ego slower than the
-    rider rides: its stated speed, a speed word's factor on its default speed ("slowly", "fast": as
-    :func:`sample_layers` draws it), else its top speed; and at most half a low stated speed."""
+def _passable_mps(spec, from_behind: bool) -> float:
+    """The fastest the ego may go for road user ``spec`` to pass it: a bicycle or an e-scooter that
+    overtakes ("flies past me on the inside") or comes up behind (``from_behind``) tells of an ego
+    slower than the rider rides: its stated speed, else its top speed; a speed word ("slowly", "fast")
+    is a factor on the speed :func:`sample_layers` gives it (the pace it comes up at, within its top
+    speed; an overtaker's default); and at most half a low speed."""
+    kind, speed = spec.kind, spec.speed_mps
     top = TYPES[kind][3]
-    if speed is None:
+    if speed is None or 0.0 <= speed < DRIVES_AT_LEAST_MPS:  # (a standstill read for it is where it ends)
         rides = top
-    elif speed < 0:  # (a speed word: a factor on the default speed)
-        rides = min(_default_speed(kind, "behind", top) * -speed, top)
+    elif speed < 0:  # (a speed word: a factor)
+        rides = min((top if from_behind else _default_speed(kind, "behind", top)) * -speed, top)
     else:
         rides = min(speed, top)
     return max(rides - PASSING_MARGIN_MPS, min(2.0, rides / 2.0))
@@ -993,6 +1001,22 @@ def _passes_from_behind(spec, first: str, relation: str, intent: str) -> bool:
         return False
     return (first == "along_road" and vulnerable(spec.kind)) or (
         first == "run_red_light" and spec.kind in RIDERS_AT_KERB
+    )
+
+
+def _waits_then_runs_the_red(spec) -> bool:
+    """Whether ``spec`` is a rider at the kerb said to stand there, then ride through the red ("a cyclist
+    stopped at the kerb, then ran the red"): its stop is the wait before it sets off, not a standstill
+    it holds (as read first, a stop that never ends, it stood at the kerb for the whole run)."""
+    names = [b[0] for b in spec.behaviours[:2]]
+    return (
+        (spec.relation or "").startswith("roadside")
+        and spec.kind in RIDERS_AT_KERB
+        and names
+        == [
+            "stop",
+            "run_red_light",
+        ]
     )
 
 
