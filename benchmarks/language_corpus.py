@@ -105,6 +105,8 @@ FIRST = {
     "language_independent_z52.json": ((50, 50, 12, 49), "measured when written"),
     "language_independent_z53.json": ((50, 50, 12, 45), "measured when written"),
     "language_independent_z54.json": ((50, 50, 7, 43), "measured when written"),
+    "language_independent_z55.json": ((50, 50, 15, 46), "measured when written"),
+    "language_independent_z56.json": ((50, 50, 11, 46), "measured when written"),
 }
 
 

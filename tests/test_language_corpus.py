@@ -121,6 +121,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z52.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z53.json": (50, 15),
     ROOT / "tests" / "data" / "language_independent_z54.json": (50, 8),
+    ROOT / "tests" / "data" / "language_independent_z55.json": (50, 16),
+    ROOT / "tests" / "data" / "language_independent_z56.json": (50, 14),
 }
 
 
