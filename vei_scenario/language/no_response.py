@@ -2,8 +2,8 @@
 "Then the AEB shall not activate", "no warning shall be issued", "no ACC braking expected", or that
 they respond only as in everyday driving: "the ACC shall reduce speed without triggering a collision
 warning", "Expected: smooth decel", "the system shall bring the ego to a controlled stop". Not where
-an expected result also has the ego warn, brake in an emergency, swerve or hand over ("Expected: the
-ego decelerates smoothly; if that is not enough, FCW and AEB"). Keeping a time gap is no such result:
+an expected result also has the ego warn, brake in an emergency, swerve or hand over ("Expected: a
+controlled stop after the FCW"). Keeping a time gap is no such result:
 it is how a following test is set up, whatever happens next.
 
 Why: a false-positive test states its outcome this way. The road user is there, does its thing and
@@ -173,5 +173,5 @@ def no_response_expected(tokens: list[str]) -> str | None:
             more = more or _beyond_everyday(words)
         previous = words
     # (an everyday response in one expected result, and a warning or the AEB in another, is no quiet pass:
-    # "Expected: the ACC decelerates smoothly; if that is not enough, FCW and AEB")
+    # "Expected: gentle decel behind the van. Pass: FCW and AEB if the van brakes harder")
     return " ".join(comfort) if comfort and not more else None

@@ -191,7 +191,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             and first.NAME in DRIVES
             and ego_speed == 0.0
             and vulnerable(spec.kind)
-            and not (relation == "behind" and _comes_up_behind(spec))  # (it rides at its own pace: _coming_up_pace)
+            and not _comes_up_behind(spec)  # (it rides at its own pace: _coming_up_pace)
         ):
             given_speed = min(_u(rng, lo, hi), TYPES[spec.kind][3])  # (not the ego's standstill: a rider's pace)
         if given_speed is None and first.NAME == "wrong_way":
@@ -351,7 +351,8 @@ def _passes_ego(spec) -> bool:
 
 def _comes_up_behind(spec) -> bool:
     """Whether ``spec`` is a rider said to come up behind the ego along the road or through the red
-    ("came up the inside along the kerb")."""
+    ("came up the inside along the kerb"): of those :func:`_passes_from_behind` places beside the ego,
+    the riders (a walker's pace sets no ego's)."""
     first = spec.behaviours[0][0] if spec.behaviours else None
     return (
         spec.relation == "behind"
@@ -1008,16 +1009,9 @@ def _waits_then_runs_the_red(spec) -> bool:
     """Whether ``spec`` is a rider at the kerb said to stand there, then ride through the red ("a cyclist
     stopped at the kerb, then ran the red"): its stop is the wait before it sets off, not a standstill
     it holds (as read first, a stop that never ends, it stood at the kerb for the whole run)."""
-    names = [b[0] for b in spec.behaviours[:2]]
-    return (
-        (spec.relation or "").startswith("roadside")
-        and spec.kind in RIDERS_AT_KERB
-        and names
-        == [
-            "stop",
-            "run_red_light",
-        ]
-    )
+    names = tuple(b[0] for b in spec.behaviours[:2])
+    at_kerb = (spec.relation or "").startswith("roadside") and spec.kind in RIDERS_AT_KERB
+    return at_kerb and names == ("stop", "run_red_light")
 
 
 def _roadside_speed(kind: str, speed: float | None) -> float:
