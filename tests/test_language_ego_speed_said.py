@@ -421,8 +421,20 @@ def test_a_car_model_is_no_numbered_road(text, kph):
         "We queued at the roundabout entry; a van from the left cut across us.",
         "I waited at the junction to turn right. A car came from the left and hit me.",
         "As we idled at the crossing a scooter clipped our mirror.",
+        "I sat in traffic when a taxi ran into the back of me.",
+        "I was waiting at the lights when a car hit me from behind. Afterwards I drove off to the garage.",
+        "I queued at the toll booth when the car behind bumped me; I set off again once the barrier opened.",
     ],
-    ids=["while-i-waited", "i-sat", "we-queued", "i-waited-to-turn", "as-we-idled"],
+    ids=[
+        "while-i-waited",
+        "i-sat",
+        "we-queued",
+        "i-waited-to-turn",
+        "as-we-idled",
+        "sat-in-traffic",
+        "drove-off-after-the-event",
+        "set-off-after-the-event",
+    ],
 )
 def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
     assert ego_kph(text) == 0
@@ -441,6 +453,7 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "I waited at the red light. When it turned green I pulled away and a car ran the red into my side.",
         "I was waiting at the lights and when they changed I moved off and a walker stepped out in front of me.",
         "I sat behind the tractor for miles, then overtook it and a car came the other way.",
+        "I waited at the stop line, then moved off and a walker stepped out in front of me.",
     ],
     ids=[
         "another-waited",
@@ -453,6 +466,7 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "then-pulled-away",
         "was-waiting-then-moved-off",
         "sat-behind-then-overtook",
+        "then-moved-off-no-subject",
     ],
 )
 def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):
@@ -471,3 +485,16 @@ def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the
 )
 def test_a_unit_an_hour_glued_to_its_number_is_a_speed(text, kph):
     assert ego_kph(text) == pytest.approx(kph, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "We did 100km an hour ago and then a truck cut in front of us at the services.",
+        "I went 10km an hour slower than the limit when the bus pulled out.",
+        "We passed the 20 miles an hour earlier sign and then a van cut in.",
+    ],
+    ids=["an-hour-ago", "slower-than", "earlier"],
+)
+def test_an_hour_said_of_a_time_or_a_difference_is_no_unit_of_speed(text):
+    assert read(text).ego_speed_mps is None

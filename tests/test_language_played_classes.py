@@ -657,3 +657,36 @@ def test_a_rider_said_to_come_up_behind_fast_is_no_slower_than_one_with_no_word(
     plain, fast = layers(None), layers(-1.3)
     assert float(fast["adversaries"][0]["speed_mps"]) >= float(plain["adversaries"][0]["speed_mps"])
     assert float(fast["ego"]["speed_mps"]) < float(fast["adversaries"][0]["speed_mps"])
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter"])
+def test_a_speed_word_on_an_overtaking_rider_slows_no_ego(kind):
+    """ "A cyclist overtook me fast on the inside": the pass is timed on the ego's speed, so the word
+    sets the ego no lower bound than the same rider with no word."""
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    def ego(speed):
+        rider = ActorSpec(kind, "behind", None, speed, [("overtake", {}, None, "sequence")])
+        return float(
+            sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider]), "test", 0)["ego"]["speed_mps"]
+        )
+
+    assert ego(-1.3) == ego(None) == ego(-0.6)
+
+
+@pytest.mark.parametrize("kind", ["bicycle", "e-scooter"])
+def test_a_rider_at_the_kerb_who_runs_the_red_past_a_waiting_ego_rides_at_a_rider_s_pace(kind):
+    """Beside an ego waiting at the lights, a rider at the kerb who runs the red rides at its own
+    pace, not at its kind's top speed drawn from the road's pace (a bicycle at 36 km/h)."""
+    from vei_scenario.language.behaviours.along_road import PACE_MPS
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    for moves in (
+        [("run_red_light", {}, None, "sequence")],
+        [("stop", {}, None, "sequence"), ("run_red_light", {}, None, "sequence")],
+    ):
+        rider = ActorSpec(kind, "roadside_right", None, None, moves)
+        reading = Reading(map_kind="crossroad", lanes=1, ego_speed_mps=0.0, actors=[rider])
+        assert float(sample_layers(reading, "test", 0)["adversaries"][0]["speed_mps"]) == PACE_MPS[kind]

@@ -357,6 +357,9 @@ def test_a_smooth_or_silent_response_said_outside_an_expectation_or_beside_a_har
         "Precondition: the ACC shall maintain the set time gap of 1.8 s. The lead car then brakes at 8 m/s2."
         " Expected: FCW followed by AEB.",
         "The test driver shall not brake during the run; the target car cuts in 8 m ahead.",
+        "Target car brakes at 6 m/s2 in front of the ego at 60 km/h. Expected result: the ego comes to a"
+        " controlled stop, collision avoided.",
+        "Ego at 50 km/h, a child runs out 8 m ahead. Expected: controlled stop, no contact.",
     ],
     ids=[
         "aeb-activates",
@@ -370,6 +373,8 @@ def test_a_smooth_or_silent_response_said_outside_an_expectation_or_beside_a_har
         "moderate-rain",
         "keeps-the-gap-then-aeb",
         "a-driver-shall-not-brake",
+        "collision-avoided",
+        "no-contact",
     ],
 )
 def test_a_response_beyond_everyday_driving_a_bound_or_a_story_s_expectation_is_no_safe_pass(text):

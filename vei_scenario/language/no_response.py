@@ -131,12 +131,23 @@ def _quiet_said(words: list[str]) -> list[str] | None:
     return None
 
 
+#: Words of a conflict the ego got out of ("collision avoided", "no contact", "without impact"): said
+#: beside a controlled stop, the stop was an escape, a near miss (not a "collision warning").
+_CONFLICT = frozenset(("collision", "collisions", "contact", "impact", "crash", "avoided"))
+
+
+def _conflict_said(words: list[str]) -> bool:
+    """Whether ``words`` speak of a conflict, denied or not ("controlled stop, no collision"), other
+    than a collision warning."""
+    return any(w in _CONFLICT and words[k + 1 : k + 2] != ["warning"] for k, w in enumerate(words))
+
+
 def _comfort_said(words: list[str]) -> list[str] | None:
     """The words that say the ego responds as in everyday driving ("smooth decel", "a controlled stop",
     "adapt speed smoothly"): a word of everyday manner said of a response, not of the road or the
     weather ("smooth dry asphalt", "moderate rain"), where nothing in the sentence says the ego did more
-    (:func:`_beyond_everyday`); or None."""
-    if _beyond_everyday(words):
+    (:func:`_beyond_everyday`) or that a conflict was got out of (:func:`_conflict_said`); or None."""
+    if _beyond_everyday(words) or _conflict_said(words):
         return None
     for k, w in enumerate(words):
         manner = w in _COMFORTABLE or w == "controlled"

@@ -147,11 +147,19 @@ def _km_as_speed(m: re.Match) -> str:
     return f"{m.group(1)} {m.group(2)} km/h"
 
 
+#: What after "an hour" makes it a time or a difference, not a unit of speed ("100 km an hour ago", "10 km
+#: an hour slower than the limit").
+_NOT_A_TIME = r"(?!\s+(?:ago|later|earlier|before|after|slower|faster|over|under|less|more|above|below)\b)"
+
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = _UNIT_FORMS + [
-    (re.compile(r"(?:\b|(?<=\d))miles?\s+(?:an|per|a)\s+hour\b|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
+    (re.compile(r"(?:\b|(?<=\d))miles?\s+(?:an|per|a)\s+hour\b" + _NOT_A_TIME + r"|\bmi/h\b|\bm\.p\.h\.?"), "mph"),
     (  # (glued to its number too: "40km an hour")
-        re.compile(r"(?:\b|(?<=\d))(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b|\bkm/hr?\b|\bkmph\b|\bkm/std\b"),
+        re.compile(
+            r"(?:\b|(?<=\d))(?:kilomet(?:er|re)s?|km)\s+(?:an|per|a)\s+hour\b"
+            + _NOT_A_TIME
+            + r"|\bkm/hr?\b|\bkmph\b|\bkm/std\b"
+        ),
         "km/h",
     ),
     (re.compile(r"\bmet(?:er|re)s?\s+(?:per|a)\s+second\b|\bmps\b"), "m/s"),

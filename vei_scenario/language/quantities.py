@@ -1456,11 +1456,10 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
             if m.slot == "behaviour" and other:  # (what the ego did before it stood is no one acting on it)
                 acted = True
             stop = m.slot == "behaviour" and m.value[0] == "stop" and _stop_as_state(m)
-            still = (
-                m.words in STILL_WORDS or m.words in _STANDING or (k > 0 and _stative_past(said[k - 1], m, tokens))
-            )  # ("was stationary", "we were stood at the lights", "I waited at the lights")
+            still = m.words in STILL_WORDS or m.words in _STANDING  # ("was stationary", "we were stood at the lights")
+            stative = k > 0 and _stative_past(said[k - 1], m, tokens)  # ("I waited at the lights", "we sat in traffic")
             denied = _motion_denied(m, said[k + 1 : k + 2])  # ("we weren't moving", "I was not driving")
-            if not k or not (stop or denied or (still and m.slot in ("stationary", "unknown_verb"))):
+            if not k or not (stop or denied or stative or (still and m.slot in ("stationary", "unknown_verb"))):
                 continue  # ("was stationary", "were stopped at the junction": a state)
             ego = said[k - 1]
             if _it_the_egos_vehicle(ego, subject):
@@ -1552,14 +1551,25 @@ _SETTING_OFF = (
 
 
 def _sets_off_after(tokens: list[str], start: int) -> bool:
-    """Whether the ego (I, we) is said to set off after the state that ends at ``start`` ("I waited at
-    the red light. When it turned green I pulled away and a car ran the red"): then it moves when the
-    scene happens, and did not stand through it."""
+    """Whether the ego is said to set off after the state that ends at ``start`` and before anyone else
+    is named ("I waited at the red light. When it turned green I pulled away and a car ran the red", "I
+    waited at the stop line, then moved off and a walker stepped out"): then it moves when the scene
+    happens, and did not stand through it. A setting off told after another comes in ("... when a car
+    hit me from behind. Afterwards I drove off") is after the event."""
     for i in range(start, len(tokens)):
+        if tokens[i] in _ROAD_USER_WORDS:
+            return False
         for phrase in _SETTING_OFF:
-            if tuple(tokens[i : i + len(phrase)]) == phrase and set(tokens[max(start, i - 3) : i]) & {"i", "we"}:
+            said = tuple(tokens[i : i + len(phrase)]) == phrase
+            if said and (set(tokens[max(start, i - 3) : i]) & {"i", "we"} or tokens[i - 1] in ("then", "and")):
                 return True
     return False
+
+
+#: The words that name a road user (a noun of the lexicon, and its plural).
+_ROAD_USER_WORDS = frozenset(
+    w + s for nouns in L.ACTOR_NOUNS.values() for w in nouns if " " not in w for s in ("", "s")
+)
 
 
 #: Verbs of standing whose simple past is a state the subject was in, not a stop it made ("I waited at
@@ -1574,8 +1584,9 @@ def _stative_past(ego, state, tokens: list[str]) -> bool:
     "was waiting" is. Not a wait for something to be done ("I waited too long to brake", "I waited for
     a gap and pulled out"), nor a going ("we idled through the car park", "I stood up on the pedals"), nor
     a place behind someone ("I sat behind the bus for ages, then overtook it": following)."""
-    after = tokens[state.end] if state.end < len(tokens) else ""
-    return state.words in _STATIVE_PAST and ego.end == state.start and after in _WHERE_IT_STOOD
+    verb, *rest = state.words.split()  # ("sat in", read as one phrase, says its place word too)
+    after = rest[0] if rest else (tokens[state.end] if state.end < len(tokens) else "")
+    return verb in _STATIVE_PAST and ego.end == state.start and after in _WHERE_IT_STOOD
 
 
 #: Words after a verb of standing that say where the one stood ("waited at", "sat in the queue",

@@ -192,6 +192,7 @@ def sample_layers(reading: Reading, text: str, seed: int, notes: list[str] | Non
             and ego_speed == 0.0
             and vulnerable(spec.kind)
             and not _comes_up_behind(spec)  # (it rides at its own pace: _coming_up_pace)
+            and not (relation.startswith("roadside") and first.NAME == "run_red_light")  # (and one at the kerb)
         ):
             given_speed = min(_u(rng, lo, hi), TYPES[spec.kind][3])  # (not the ego's standstill: a rider's pace)
         if given_speed is None and first.NAME == "wrong_way":
@@ -377,14 +378,15 @@ def _passable_mps(spec, from_behind: bool) -> float:
     """The fastest the ego may go for road user ``spec`` to pass it: a bicycle or an e-scooter that
     overtakes ("flies past me on the inside") or comes up behind (``from_behind``) tells of an ego
     slower than the rider rides: its stated speed, else its top speed; a speed word ("slowly", "fast")
-    is a factor on the speed :func:`sample_layers` gives it (the pace it comes up at, within its top
-    speed; an overtaker's default); and at most half a low speed."""
+    of one from behind is a factor on its top speed, as on the pace :func:`sample_layers` gives it (an
+    overtaker's pass is timed on the ego's speed: its word sets no bound); and at most half a low
+    speed."""
     kind, speed = spec.kind, spec.speed_mps
     top = TYPES[kind][3]
     if speed is None or 0.0 <= speed < DRIVES_AT_LEAST_MPS:  # (a standstill read for it is where it ends)
         rides = top
-    elif speed < 0:  # (a speed word: a factor)
-        rides = min((top if from_behind else _default_speed(kind, "behind", top)) * -speed, top)
+    elif speed < 0:  # (a speed word: a factor on the pace one from behind comes up at; an overtaker's pass
+        rides = min(top * -speed, top) if from_behind else top  # runs at the ego's speed and more, whatever the word)
     else:
         rides = min(speed, top)
     return max(rides - PASSING_MARGIN_MPS, min(2.0, rides / 2.0))
