@@ -3690,7 +3690,7 @@ def _specialise(
             # (a kerb with no side: the right edge, which the layers' right-hand road keeps clear of the
             # lane beside it; relation and start stay the writer's near kerb's)
             left = side == "left" or (side is None and spec.relation == "roadside_left" and not a.kerb)
-            spec.lateral_m = 1.2 if left else -1.2
+            spec.lateral_m = kerb_ride.EDGE_OFFSET_M if left else -kerb_ride.EDGE_OFFSET_M
             spec.beside = a.beside or a.own_lane  # ("on my left", "in the cycle lane": not in the ego's lane)
         spec.relation = "ahead" if spec.relation != "behind" else "behind"
         spec.behaviours = head_on(spec, a.kind in RIDERS and a.wrong_way)
