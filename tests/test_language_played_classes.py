@@ -619,7 +619,8 @@ def test_a_rider_said_to_stand_at_the_kerb_then_run_the_red_sets_off(kind, relat
 
 
 def test_a_red_light_runner_that_never_sets_off_is_a_played_problem(tmp_path):
-    """The played check names a red-light runner that stands where it starts for the whole run."""
+    """The played check names a red-light runner that stands where it starts for the whole run (here
+    held by a wait longer than the run)."""
     layers = layers_of(
         "crossroad",
         {"placement": "before_junction", "lane": 1, "speed_mps": 10.0, "distance_m": 60.0, "route": "straight"},
@@ -631,7 +632,7 @@ def test_a_red_light_runner_that_never_sets_off_is_a_played_problem(tmp_path):
                 "speed_mps": 0.0,
                 "behaviour": {
                     "sequence": [
-                        {"behaviour": "stop", "config": {}},
+                        {"behaviour": "stop", "config": {"delay_s": 60.0}},  # (longer than the run)
                         {"behaviour": "run_red_light", "config": {"arrival_gap_s": 1.2}},
                     ]
                 },
@@ -690,3 +691,24 @@ def test_a_rider_at_the_kerb_who_runs_the_red_past_a_waiting_ego_rides_at_a_ride
         rider = ActorSpec(kind, "roadside_right", None, None, moves)
         reading = Reading(map_kind="crossroad", lanes=1, ego_speed_mps=0.0, actors=[rider])
         assert float(sample_layers(reading, "test", 0)["adversaries"][0]["speed_mps"]) == PACE_MPS[kind]
+
+
+@pytest.mark.parametrize("route", ["straight", "right"])
+@pytest.mark.parametrize("kind", ["e-scooter", "bicycle", "pedestrian"])
+def test_one_who_crosses_from_the_kerb_and_then_runs_the_red_keeps_going(route, kind, tmp_path):
+    """ "came off the pavement on my right and went straight through his red light": after crossing from
+    the kerb, where it started standing, it runs the red at its own pace; held at the standstill it
+    started in, it stopped a few metres out and never made the run."""
+    import numpy as np
+
+    from vei_scenario.language.reading import ActorSpec, Reading
+    from vei_scenario.language.rules_backend import sample_layers
+
+    moves = [("cross_in_front", {}, None, "sequence"), ("run_red_light", {}, None, "sequence")]
+    rider = ActorSpec(kind, "roadside_right", None, None, moves)
+    reading = Reading(map_kind="crossroad", lanes=1, ego_speed_mps=4.5, ego_route=route, actors=[rider])
+    layers = sample_layers(reading, "test", 0)
+    result = play_layers(layers, tmp_path)
+    trace = result.traces["Adversary1"]
+    assert float(np.hypot(np.ptp(trace.x), np.ptp(trace.y))) > 20.0
+    assert not any("never set off" in p for p in played_problems(result, layers))

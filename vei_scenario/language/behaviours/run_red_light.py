@@ -40,7 +40,7 @@ PROFILES = {
 
 def compile(ctx: ActorContext, cfg: dict) -> list[Step]:
     # the spawn distance (placement) sets the timing; here only the route and the held speed
-    actions = [speed_action(ctx.actor_speed_mps)]
+    actions = [speed_action(running_mps(ctx))]
     if not ctx.routed:  # (one an earlier behaviour turns at the junction runs the red along that turn)
         # (the way the text says, else one that meets the ego: the maps drive on the right, and
         # way_through's choice for the opposite arm assumes so)
@@ -81,5 +81,21 @@ def through_s(ctx: ActorContext) -> float:
     path, not seconds after it set off far up its arm."""
     to_entry = max(0.0, ctx.junction_end_s_m - ctx.actor_s_m) if ctx.junction_end_s_m else 0.0
     through = math.pi * ROUNDABOUT_RADIUS_M if ctx.map_kind == "roundabout" else 2 * JUNCTION_RADIUS_M
-    v = ctx.actor_speed_mps
+    v = running_mps(ctx)
     return round(min(time_to_cover(to_entry + through, v, ctx.actor_max_accel_mps2, start_mps=v), 60.0), 3)
+
+
+#: Below this start speed (m/s) a runner set off from a standstill: it stood until now.
+STANDING_MPS = 0.5
+
+
+def running_mps(ctx: ActorContext) -> float:
+    """The speed it runs the red at: its own, or, where it starts standing (a rider who crossed from the
+    kerb first, one who stood at the kerb: "came off the pavement and went straight through his red
+    light"), a walker's or rider's pace for its kind, else the ego's. Why: held at the standstill it
+    started in, it never set off, and the run the text tells was never made."""
+    if ctx.actor_speed_mps >= STANDING_MPS:
+        return ctx.actor_speed_mps
+    from vei_scenario.language.behaviours.along_road import PACE_MPS
+
+    return PACE_MPS.get(ctx.actor_type, max(ctx.ego_speed_mps, 8.0))
