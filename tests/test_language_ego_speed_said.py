@@ -454,6 +454,8 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "I was waiting at the lights and when they changed I moved off and a walker stepped out in front of me.",
         "I sat behind the tractor for miles, then overtook it and a car came the other way.",
         "I waited at the stop line, then moved off and a walker stepped out in front of me.",
+        "I waited at the lights behind a van. When they changed I moved off and a cyclist undertook me.",
+        "I sat in traffic for ages and eventually drove off; then a lorry cut me up.",
     ],
     ids=[
         "another-waited",
@@ -467,6 +469,8 @@ def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):
         "was-waiting-then-moved-off",
         "sat-behind-then-overtook",
         "then-moved-off-no-subject",
+        "another-named-before-setting-off",
+        "eventually-drove-off",
     ],
 )
 def test_standing_in_the_simple_past_of_another_or_after_another_acts_is_not_the_ego_at_rest(text):
@@ -498,3 +502,19 @@ def test_a_unit_an_hour_glued_to_its_number_is_a_speed(text, kph):
 )
 def test_an_hour_said_of_a_time_or_a_difference_is_no_unit_of_speed(text):
     assert read(text).ego_speed_mps is None
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was doing 40 km an hour before the junction when a cat ran out.", 40),
+        ("We were at 80 km an hour over the crest when a tractor pulled out.", 80),
+    ],
+    ids=["before-a-place", "over-a-place"],
+)
+def test_a_speed_an_hour_before_a_place_is_a_speed(text, kph):
+    assert ego_kph(text) == pytest.approx(kph, rel=1e-3)
+
+
+def test_miles_an_hour_over_the_limit_is_no_speed():
+    assert read("I was 5 miles an hour over the limit when a van cut in front of me.").ego_speed_mps is None

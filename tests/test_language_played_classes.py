@@ -673,7 +673,7 @@ def test_a_speed_word_on_an_overtaking_rider_slows_no_ego(kind):
             sample_layers(Reading(map_kind="straight", lanes=1, actors=[rider]), "test", 0)["ego"]["speed_mps"]
         )
 
-    assert ego(-1.3) == ego(None) == ego(-0.6)
+    assert ego(-1.3) == ego(None) > ego(-0.6)  # ("overtook me slowly as I crawled along": a slower ego)
 
 
 @pytest.mark.parametrize("kind", ["bicycle", "e-scooter"])

@@ -315,8 +315,18 @@ def test_words_of_a_test_said_in_a_story_leave_its_outcome_as_told(text, intent)
         "While the ego follows a tractor at 40 km/h on a country lane, when the tractor turns off, the ACC shall"
         " adapt speed smoothly.",
         "Postconditions: the ego has passed the cyclist riding at the kerb without FCW.",
+        "A cyclist crosses 40 m ahead of the ego at 30 km/h. Expected: controlled stop, no crash alert.",
+        "A van cuts in 30 m ahead. Expected: comfortable braking; time to collision stays above 3 s.",
     ],
-    ids=["without-collision-warning", "gentle-decel", "controlled-stop", "adapt-speed-smoothly", "without-fcw"],
+    ids=[
+        "without-collision-warning",
+        "gentle-decel",
+        "controlled-stop",
+        "adapt-speed-smoothly",
+        "without-fcw",
+        "no-crash-alert",
+        "time-to-collision",
+    ],
 )
 def test_an_expected_everyday_response_of_the_ego_is_a_safe_pass(text):
     """A requirement or expected result that the ego responds as in everyday driving (smoothly, to a

@@ -138,8 +138,16 @@ _CONFLICT = frozenset(("collision", "collisions", "contact", "impact", "crash", 
 
 def _conflict_said(words: list[str]) -> bool:
     """Whether ``words`` speak of a conflict, denied or not ("controlled stop, no collision"), other
-    than a collision warning."""
-    return any(w in _CONFLICT and words[k + 1 : k + 2] != ["warning"] for k, w in enumerate(words))
+    than a system named after one ("collision warning", "crash alert", "collision mitigation braking")
+    or a time to one ("time to collision stays above 3 s")."""
+    return any(
+        w in _CONFLICT and not set(words[k + 1 : k + 2]) & _NAMED_AFTER_A_CONFLICT and words[k - 1 : k] != ["to"]
+        for k, w in enumerate(words)
+    )
+
+
+#: Words after a conflict's name that make it a system's or a measure's ("collision warning").
+_NAMED_AFTER_A_CONFLICT = frozenset(("warning", "warnings", "alert", "alerts", "mitigation", "avoidance", "imminent"))
 
 
 def _comfort_said(words: list[str]) -> list[str] | None:

@@ -148,8 +148,8 @@ def _km_as_speed(m: re.Match) -> str:
 
 
 #: What after "an hour" makes it a time or a difference, not a unit of speed ("100 km an hour ago", "10 km
-#: an hour slower than the limit").
-_NOT_A_TIME = r"(?!\s+(?:ago|later|earlier|before|after|slower|faster|over|under|less|more|above|below)\b)"
+#: an hour slower than the limit"); "over the limit" is read as a difference by the mph it is said in.
+_NOT_A_TIME = r"(?!\s+(?:ago|later|earlier|slower|faster|less|more)\b)"
 
 #: Spelt-out or unusual speed units, as the reader's symbols.
 _UNITS = _UNIT_FORMS + [

@@ -1551,19 +1551,32 @@ _SETTING_OFF = (
 
 
 def _sets_off_after(tokens: list[str], start: int) -> bool:
-    """Whether the ego is said to set off after the state that ends at ``start`` and before anyone else
-    is named ("I waited at the red light. When it turned green I pulled away and a car ran the red", "I
-    waited at the stop line, then moved off and a walker stepped out"): then it moves when the scene
-    happens, and did not stand through it. A setting off told after another comes in ("... when a car
-    hit me from behind. Afterwards I drove off") is after the event."""
+    """Whether the ego is said to set off after the state that ends at ``start`` and before any contact
+    ("I waited at the red light. When it turned green I pulled away and a car ran the red", "I waited at
+    the stop line, then moved off and a walker stepped out", "I waited behind a bus; when the lights
+    changed I moved off and ..."): then it moves when the scene happens, and did not stand through it.
+    A setting off told after the contact ("... when a car hit me from behind. Afterwards I drove off")
+    is after the event, and one said of a road user ("the cyclist ahead moved off") is not the ego's."""
     for i in range(start, len(tokens)):
-        if tokens[i] in _ROAD_USER_WORDS:
-            return False
+        if tokens[i] in _CONTACT_WORDS:
+            return False  # (what comes after the contact is after the event)
         for phrase in _SETTING_OFF:
-            said = tuple(tokens[i : i + len(phrase)]) == phrase
-            if said and (set(tokens[max(start, i - 3) : i]) & {"i", "we"} or tokens[i - 1] in ("then", "and")):
+            if tuple(tokens[i : i + len(phrase)]) != phrase:
+                continue
+            before = set(tokens[max(start, i - 3) : i])
+            if before & _ROAD_USER_WORDS:
+                continue  # ("the cyclist ahead drove off": another's)
+            if before & {"i", "we"} or tokens[i - 1] in ("then", "and", "eventually", "finally"):
                 return True
     return False
+
+
+#: Words of contact: a setting off said after them is after the event ("... hit me from behind.
+#: Afterwards I drove off").
+_CONTACT_WORDS = frozenset(
+    ("hit", "hits", "struck", "crashed", "collided", "bumped", "scraped", "clipped", "rammed", "shunted", "smashed",
+     "rear-ended", "pushed", "into")
+)  # fmt: skip
 
 
 #: The words that name a road user (a noun of the lexicon, and its plural).

@@ -378,15 +378,17 @@ def _passable_mps(spec, from_behind: bool) -> float:
     """The fastest the ego may go for road user ``spec`` to pass it: a bicycle or an e-scooter that
     overtakes ("flies past me on the inside") or comes up behind (``from_behind``) tells of an ego
     slower than the rider rides: its stated speed, else its top speed; a speed word ("slowly", "fast")
-    of one from behind is a factor on its top speed, as on the pace :func:`sample_layers` gives it (an
-    overtaker's pass is timed on the ego's speed: its word sets no bound); and at most half a low
-    speed."""
+    of one from behind is a factor on its top speed, as on the pace :func:`sample_layers` gives it; an
+    overtaker's "slowly" is one on its default speed (its pass, timed on the ego's speed, sets no bound
+    for "fast"); and at most half a low speed."""
     kind, speed = spec.kind, spec.speed_mps
     top = TYPES[kind][3]
     if speed is None or 0.0 <= speed < DRIVES_AT_LEAST_MPS:  # (a standstill read for it is where it ends)
         rides = top
-    elif speed < 0:  # (a speed word: a factor on the pace one from behind comes up at; an overtaker's pass
-        rides = min(top * -speed, top) if from_behind else top  # runs at the ego's speed and more, whatever the word)
+    elif speed < 0 and from_behind:  # (a speed word: a factor on the pace one from behind comes up at)
+        rides = min(top * -speed, top)
+    elif speed < 0:  # (an overtaker's: "slowly" on its default, "fast" none, its pass running past the ego's speed)
+        rides = top if -speed >= 1.0 else _default_speed(kind, "behind", top) * -speed
     else:
         rides = min(speed, top)
     return max(rides - PASSING_MARGIN_MPS, min(2.0, rides / 2.0))
