@@ -424,6 +424,7 @@ def test_a_car_model_is_no_numbered_road(text, kph):
         "I sat in traffic when a taxi ran into the back of me.",
         "I was waiting at the lights when a car hit me from behind. Afterwards I drove off to the garage.",
         "I queued at the toll booth when the car behind bumped me; I set off again once the barrier opened.",
+        "I was waiting at the lights; the cyclist ahead moved off and a car ran into the back of me.",
     ],
     ids=[
         "while-i-waited",
@@ -434,6 +435,7 @@ def test_a_car_model_is_no_numbered_road(text, kph):
         "sat-in-traffic",
         "drove-off-after-the-event",
         "set-off-after-the-event",
+        "another-sets-off",
     ],
 )
 def test_the_simple_past_of_standing_leaves_the_ego_at_rest(text):

@@ -37,7 +37,13 @@ from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.designed_outcome import designed_outcome
 from vei_scenario.language.elided_verb import elliptical_negation
-from vei_scenario.language.function_words import CLAUSE_BREAKS, PHRASE_ENDS, SUBJECT_PRONOUNS
+from vei_scenario.language.function_words import (
+    CLAUSE_BREAKS,
+    FIRST_PERSON,
+    PHRASE_ENDS,
+    POSSESSIVE,
+    SUBJECT_PRONOUNS,
+)
 from vei_scenario.language.lemmas import lemmas
 from vei_scenario.language.light_contact import LOCATING, knock_felt, marking_met
 from vei_scenario.language.no_response import no_response_expected
@@ -1795,8 +1801,8 @@ def _subject_is_ego(words: list[str], i: int, clause: _Clause, story: bool) -> b
 #: ego's is its emergency stop when it brakes ("the AEB brakes hard"); not a cruise control or a pilot,
 #: whose braking is routine.
 _EMERGENCY_BRAKES = frozenset(("aeb", "aebs"))
-#: Owners before a system that make it another's ("their AEB", "the lorry's AEB").
-_OTHERS = frozenset(("their", "his", "her", "its", "your", "other", "another"))
+#: Owners before a system that make it another's ("their AEB", "another AEB"; "the lorry's AEB" too).
+_OTHERS = (POSSESSIVE - FIRST_PERSON) | {"other", "another"}
 
 
 def _ego_system(words: list[str]) -> bool:

@@ -1477,7 +1477,7 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                     or _stative_past(ego, m, tokens)
                 )
             ):
-                if (not acted or ego.prev in _BACKGROUND) and not _sets_off_after(tokens, m.end):
+                if (not acted or ego.prev in _BACKGROUND) and not _sets_off_after(tokens, m.end, _others_at(clauses)):
                     return True
     return False
 
@@ -1550,23 +1550,39 @@ _SETTING_OFF = (
 )  # fmt: skip
 
 
-def _sets_off_after(tokens: list[str], start: int) -> bool:
+def _others_at(clauses) -> frozenset[int]:
+    """The positions of the words that name a road user other than the ego, as the reader found them."""
+    return frozenset(
+        i
+        for _, mentions in clauses
+        for m in mentions
+        if m.slot == "actor" and m.value != "ego"
+        for i in range(m.start, m.end)
+    )
+
+
+def _sets_off_after(tokens: list[str], start: int, others: frozenset[int]) -> bool:
     """Whether the ego is said to set off after the state that ends at ``start`` and before any contact
     ("I waited at the red light. When it turned green I pulled away and a car ran the red", "I waited at
     the stop line, then moved off and a walker stepped out", "I waited behind a bus; when the lights
     changed I moved off and ..."): then it moves when the scene happens, and did not stand through it.
     A setting off told after the contact ("... when a car hit me from behind. Afterwards I drove off")
-    is after the event, and one said of a road user ("the cyclist ahead moved off") is not the ego's."""
+    is after the event, and one said of a road user ("the cyclist ahead moved off": ``others``, the
+    positions of the words that name one) is not the ego's."""
     for i in range(start, len(tokens)):
         if tokens[i] in _CONTACT_WORDS:
             return False  # (what comes after the contact is after the event)
         for phrase in _SETTING_OFF:
             if tuple(tokens[i : i + len(phrase)]) != phrase:
                 continue
-            before = set(tokens[max(start, i - 3) : i])
-            if before & _ROAD_USER_WORDS:
+            if others & set(range(max(start, i - 3), i)):
                 continue  # ("the cyclist ahead drove off": another's)
-            if before & {"i", "we"} or tokens[i - 1] in ("then", "and", "eventually", "finally"):
+            if set(tokens[max(start, i - 3) : i]) & {"i", "we"} or tokens[i - 1] in (
+                "then",
+                "and",
+                "eventually",
+                "finally",
+            ):
                 return True
     return False
 
@@ -1577,12 +1593,6 @@ _CONTACT_WORDS = frozenset(
     ("hit", "hits", "struck", "crashed", "collided", "bumped", "scraped", "clipped", "rammed", "shunted", "smashed",
      "rear-ended", "pushed", "into")
 )  # fmt: skip
-
-
-#: The words that name a road user (a noun of the lexicon, and its plural).
-_ROAD_USER_WORDS = frozenset(
-    w + s for nouns in L.ACTOR_NOUNS.values() for w in nouns if " " not in w for s in ("", "s")
-)
 
 
 #: Verbs of standing whose simple past is a state the subject was in, not a stop it made ("I waited at
