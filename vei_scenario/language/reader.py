@@ -25,6 +25,7 @@ whose only verb is unknown (that verb is named). A number with no unit it can re
 from __future__ import annotations
 
 import re
+from collections import Counter
 from copy import copy
 from dataclasses import dataclass, field, fields, replace
 from functools import lru_cache
@@ -2812,8 +2813,6 @@ def _read(text: str) -> Reading:
     if r.ego_speed_mps is None:
         r.ego_speed_mps = ego_speed.of_traffic(scanned)  # ("Cars are usually doing 20 mph here")
     ignored += unplaced
-    if len(actors) > MAX_ACTORS:
-        raise NotUnderstood([f"{len(actors)} road users (a scenario holds at most {MAX_ACTORS} besides the ego)"], text)
     for a in actors:
         _out_from_cover(a)
     _refuse_if_nothing_to_place(text, actors, clauses, ignored, scanned)
@@ -2822,6 +2821,8 @@ def _read(text: str) -> Reading:
         idle = [a for a in actors if _idle(a)]  # story's aside) are no road users of the scenario
         actors = [a for a in actors if not _idle(a)]
         ignored += [a.word or a.kind for a in idle]
+    actors, left_out = _the_most_a_scenario_holds(actors)
+    ignored += left_out
     for a in actors:
         if a.kind == UNKNOWN_KIND:  # a road user the reader has no word for: its kind from what it does
             names = {b[0] for b in a.behaviours}
@@ -3393,6 +3394,20 @@ def _group_acts_as_one(actors: list[_Actor]) -> None:
             if f.name not in ("group", "word", "det", "named_after", "member_named"):
                 value = getattr(acting, f.name)
                 setattr(a, f.name, copy(value) if isinstance(value, (list, set, dict)) else value)
+
+
+def _the_most_a_scenario_holds(actors: list[_Actor]) -> tuple[list[_Actor], list[str]]:
+    """The road users a scenario holds (``MAX_ACTORS``) and the words of those left out. A long text
+    names more people and vehicles than act in it (a forum post's setup, a crowd): the ones that do
+    something are kept before those only placed, each group in the order the text names them, and
+    the rest are said to be not used rather than the whole description refused."""
+    if len(actors) <= MAX_ACTORS:
+        return actors, []
+    ranked = sorted(range(len(actors)), key=lambda i: (not actors[i].behaviours, i))
+    kept = sorted(ranked[:MAX_ACTORS])
+    left = Counter(actors[i].word or actors[i].kind for i in sorted(ranked[MAX_ACTORS:]))
+    named = ", ".join(word if n == 1 else f"{word} ({n})" for word, n in left.items())
+    return [actors[i] for i in kept], [f"{len(actors)} road users, a scenario holds {MAX_ACTORS}: {named}"]
 
 
 def _idle(a: _Actor) -> bool:
