@@ -512,6 +512,10 @@ EGO_NOUNS = (
     "sv",
     "reporting car",
     "reporting driver",
+    "camera car",  # (the car that carries the camera: a dashcam clip's, a film shot's, a generator prompt's)
+    "camera vehicle",
+    "recording vehicle",  # (a data-collection drive's own vehicle)
+    "recording car",
     "robotaxi",  # (an automated vehicle, in its usual sense: the one under test)
     "robo-taxi",
     "driverless car",

@@ -514,7 +514,9 @@ def _lengths(m: re.Match) -> str:
 _DEFINED = re.compile(r"\b((?:[a-z][\w-]* ){1,5})\(\s*([a-z]{2,6})\s*\)")
 
 
-_EGO_AS_A_CAR = re.compile(r"\b(?:ego car|ego vehicle|my car|our car|my vehicle|our vehicle|test car)\b")
+_EGO_AS_A_CAR = re.compile(
+    r"\b(?:ego car|ego vehicle|my car|our car|my vehicle|our vehicle|test car|camera car|camera vehicle)\b"
+)
 _OTHER_CAR = re.compile(r"\b(?:a|an|another|one|other|some|second|third-party|third party)\s+(?:[a-z-]+\s+)?car\b")
 _THE_CAR = re.compile(r"\bthe car\b(?! (?:in front|ahead|behind|beside|next|on|in|from|that|which|coming))")
 

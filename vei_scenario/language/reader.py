@@ -3190,18 +3190,23 @@ def _read(text: str) -> Reading:
         r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
     if r.map_kind in (None, "straight") and S.signalled_junction(text, said):
         r.map_kind = "crossroad"  # ("ran the red", "at the Harbour Rd lights", "at Queen/Albert")
+    talking = S.speakers(text)  # (a greeting opens a speaker's turn: "OFFICER: Evening.")
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
         for m in ms
         if m.slot == "weather"
         or (
-            m.slot == "time" and m.prev not in S.BOUNDS and not S.greeting(m.prev, m.words, m.next_)
-        )  # ("since midnight")
+            m.slot == "time"
+            and m.prev not in S.BOUNDS  # ("since midnight")
+            and not S.greeting(m.prev, m.words, m.next_, m.start > 1 and scanned[m.start - 2] in talking)
+        )
     ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
     clocked = S.without_bounds(said)  # (the text's clocks of the time it happens)
     parts = [v for k, w, v in said_as if k == "time"]
     clock = S.dotted_clock(clocked) or stated_clock(clocked) or S.log_clock(text, _vehicle_word)
+    if clock in S.line_stamps(text) and any(k == "time" and w not in S.TIME_HINTS for k, w, _ in said_as):
+        clock = None  # (a line's stamp, "[00:20:15] Ian: ... Dusk, the sun had just set": the part said)
     clock = S.twelve_hour(clock, clocked, parts) or S.clock_in_words(clocked, parts)
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     plain = [(w, v) for k, w, v in said_as if k == "weather"]

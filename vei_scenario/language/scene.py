@@ -6,7 +6,8 @@ someone ("She asked whether hire scooters could be geofenced"), what did not hap
 sat on the lorry's bumper, ..."), thread numbering ("1/") and hashtags. Read as the scene, these give
 road users, behaviours, speeds and settings nobody saw. Each is recognised by its structure (a question
 mark, a run of lettered options after it, a verb of asking before "whether", a past perfect after
-"if"), never by its wording, and is set aside whole: its words are reported as not used.
+"if"), never by its wording, and is set aside whole: its words are reported as not used. So is what
+a generator's prompt says the clip must not show (:mod:`generation_prompt`).
 
 What is kept is what may be the scene: a question or an option list that names a road user and is
 not answering a question ("Can you make a scenario where a cyclist cuts in?", "Scenario: A) ego at
@@ -17,6 +18,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+
+from vei_scenario.language.generation_prompt import without_prompt_syntax
 
 #: Between sentences: whitespace after an end mark, or a line break.
 _BREAK = re.compile(r"((?<=[.!?])\s+|\s*\n\s*)")
@@ -137,13 +140,14 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
 
     ``names_road_user(phrase)`` is truthy when the phrase names a road user; a question or an option
     list that names none is not the scene, and the scene must keep at least one if the text has one."""
-    aside: list[str] = []
+    text, aside = without_prompt_syntax(text)  # ("Negative prompt: crash", "--ar 16:9", "(rain:1.3)")
     text = _PICTOGRAPH_BETWEEN.sub(", ", text)  # (a feeling between words ends a clause: "braked 😱 nobody hit")
     text = _PICTOGRAPH.sub(" ", text)
     text = _THREAD.sub(" ", text)
     for tag in _HASHTAG.findall(text):
         aside.append(tag[1:])
     text = _HASHTAG.sub(" ", text)
+    cut = list(aside)  # (set aside whatever the sentences are)
     kept: list[str] = []
     parts = _BREAK.split(text)
     k = 0
@@ -163,7 +167,7 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
         k += 2
     scene = "".join(kept).strip()
     if not scene or (names_road_user(text) and not names_road_user(scene)):
-        return text, []
+        return text, cut
     return scene, aside
 
 

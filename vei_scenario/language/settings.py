@@ -13,6 +13,7 @@ else the text calls the road. Each rule below is one such construction; none nam
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Callable
 
 from vei_scenario.language import lexicon as L
@@ -181,6 +182,17 @@ _CLOCK_IN_WORDS = re.compile(
 _DATE_SPAN = re.compile(r"\b\d{1,2} \d{1,2} (?:to|till|until) \d{1,2} \d{1,2}\b")
 #: "six o'clock", "7 o'clock": a whole hour, its half of the day said beside it or told by the part of the day.
 _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
+#: An hour and its minutes said as two numbers before the half of the day ("one-forty in the morning",
+#: "seven thirty at night", "ten fifteen pm"); without a half said the words may be anything else.
+_SPOKEN_MINUTES = {
+    "oh five": 5, "ten": 10, "fifteen": 15, "twenty": 20, "twenty-five": 25, "twenty five": 25, "thirty": 30,
+    "thirty-five": 35, "thirty five": 35, "forty": 40, "forty-five": 45, "forty five": 45, "fifty": 50,
+    "fifty-five": 55, "fifty five": 55,
+}  # fmt: skip
+_HOUR_AND_MINUTES = re.compile(
+    rf"\b{_HOUR_WORD}[- ]({'|'.join(sorted(_SPOKEN_MINUTES, key=len, reverse=True))})"
+    r"(?= (?:in the (?:morning|afternoon|evening)|at night|am|pm|a m|p m)\b)"
+)
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
 #: (Not "am" after "i": "11 o'clock, I am on duty" is the verb, no half of the day.)
@@ -189,15 +201,20 @@ _MORNING_SAID = re.compile(r"\b(?:in the morning|(?<!\bi )am|a m)\b")
 
 def clock_in_words(said: str, parts: list[str]) -> str | None:
     """A clock said in words ("quarter past eight": "08:15", "twenty to seven in the evening": "18:40",
-    "half five": "05:30" or "17:30"), else None. Words give no half of the day: it is the one said
-    ("in the evening", "pm"), else the one that lies within the part of the day said (``parts``: the
-    lexicon's clocks of the parts said), else the afternoon for the first hours and the morning after."""
+    "half five": "05:30" or "17:30", "one-forty in the morning": "01:40"), else None. Words give no half
+    of the day: it is the one said ("in the evening", "pm"), else the one that lies within the part of
+    the day said (``parts``: the lexicon's clocks of the parts said), else the afternoon for the first
+    hours and the morning after."""
     said = _DATE_SPAN.sub(" ", said)
     m = _CLOCK_IN_WORDS.search(said)
     oclock = _OCLOCK.search(said) if m is None else None
-    if m is None and oclock is None:
+    spoken = _HOUR_AND_MINUTES.search(said) if m is None and oclock is None else None
+    if m is None and oclock is None and spoken is None:
         return None
-    if oclock is not None:
+    if spoken is not None:  # ("one-forty in the morning")
+        m = spoken
+        hour, minute = _hour(spoken.group(1)), _SPOKEN_MINUTES[spoken.group(2)]
+    elif oclock is not None:
         m = oclock
         hour, minute = _hour(oclock.group(1)), 0
     elif m.group(4) is not None:  # ("half five")
@@ -312,6 +329,30 @@ def log_clock(text: str, is_vehicle: Callable[[str], bool]) -> str | None:
     return None
 
 
+#: A stamp of a line of a record: a clock or a running time opening the line ("[00:12:40] Sophie: ...",
+#: "07:48 Op observes ...", "00:00:02.100 --> ..."), or after a speaker's label and ending it ("Speaker 2
+#: (00:31): ...", "Noor 15:02: ...", "Marcus Feld  0:03" on a line of its own; a label is capitalised
+#: words, a name or a role, not "I left at 9:15"). Only the first two fields
+#: are kept, as a clock is read ("01:12:03": "01:12").
+_STAMP = r"(?<![\d:])[\[(]?(\d{1,2}):([0-5]\d)(?::[0-5]\d(?:[.,]\d+)?)?[\])]?"
+_LINE_STAMP = re.compile(
+    rf"(?m)^[ \t]*(?:{_STAMP}(?=[ \t]|$)"
+    rf"|[A-Z][\w.'&-]*(?:[ \t]+(?:[A-Z0-9][\w.'&-]*|\([^()\n]{{1,24}}\))){{0,3}}[ \t]*{_STAMP}[ \t]*(?::|$))"
+)
+
+
+def line_stamps(text: str) -> frozenset[str]:
+    """The clocks ("HH:MM") of the stamps that open the lines of the original ``text`` or end their
+    speakers' labels. A stamp says when a line was logged, said or shown (a meeting transcript's
+    running time, an audio-description cue, a log's entry): where the text also says a part of the
+    day, that part is when what it tells of happened, and the stamp is not."""
+    found = set()
+    for m in _LINE_STAMP.finditer(text):
+        hour, minute = (m.group(1), m.group(2)) if m.group(1) is not None else (m.group(3), m.group(4))
+        found.add(f"{int(hour):02d}:{minute}")
+    return frozenset(found)
+
+
 #: A greeting with a part of the day ("Good afternoon.", "good evening all"): when a message is written,
 #: not when what it tells of happened. It stands alone, or before whom it greets.
 _GREETED = frozenset(("good",))
@@ -320,11 +361,31 @@ _AFTER_A_GREETING = frozenset(
 )
 
 
-def greeting(prev: str, words: str, next_: str) -> bool:
+def greeting(prev: str, words: str, next_: str, speaker: bool = False) -> bool:
     """Whether the time words ``words`` between the tokens ``prev`` and ``next_`` are a greeting ("Good
-    morning.", "good evening all"); not "a good morning for a drive"."""
+    morning.", "good evening all"); not "a good morning for a drive". A part of the day alone opening a
+    speaker's turn (``speaker``: the label before ``prev``, a colon, is one of :func:`speakers`:
+    "OFFICER: Evening. ...", "Paul: Morning all") greets too; after a field's label ("Time: evening.")
+    it is the time."""
     parts = ("morning", "afternoon", "evening", "night", "day")
+    if speaker and prev == ":" and words in parts[:3] and next_ in _AFTER_A_GREETING:
+        return True
     return prev in _GREETED and words in parts and next_ in _AFTER_A_GREETING
+
+
+#: A label opening a line of a dialogue, after any stamp ("OFFICER:", "[00:00:03] Paul Gren:", "Speaker 2
+#: (00:31):"): its last word, as the reader's tokens have it before the colon.
+_SPEAKER_LABEL = re.compile(
+    r"(?m)^[ \t]*(?:[\[(]?\d{1,2}:\d\d(?::\d\d)?[\])]?[ \t]+)?(?:[A-Za-z][\w.'-]*[ \t]+){0,3}([A-Za-z][\w'-]*)"
+    r"(?:[ \t]*[\[(][\d:.]+[\])])?[ \t]*:(?!\d)"
+)
+
+
+def speakers(text: str) -> frozenset[str]:
+    """The speakers of a dialogue written one turn a line (the last word of each label that opens two or
+    more lines of the original ``text``, lowercased): a field label opens one line."""
+    labels = Counter(m.group(1).lower() for m in _SPEAKER_LABEL.finditer(text))
+    return frozenset(label for label, n in labels.items() if n >= 2)
 
 
 #: A day, or "this", with its half said as "am" or "pm" ("Tues AM", "Friday pm", "this am").

@@ -1,0 +1,180 @@
+"""Two styles a description arrives in: a prompt written for a text-to-video generator (negative prompts,
+weights, settings, "the camera car"), and a meeting transcript or log whose lines carry stamps (a
+running time or a clock of the record, not the time the scene happened).
+
+Every wording here is written for these tests (none is from a corpus). Each rule has wordings that must
+read and near misses that look alike but must not."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.generation_prompt import without_prompt_syntax
+from vei_scenario.language.reader import read
+from vei_scenario.language.settings import clock_in_words, line_stamps, speakers
+
+KPH = 1 / 3.6
+MPH = 0.44704
+
+
+# --- what a generator must not show is not the scene ------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "dashcam, rainy dusk, a delivery van pulls out of a driveway on the right and we slow and let it go\n"
+        "Negative prompt: crash, collision, debris, cartoon",
+        "dashcam, a van pulls out of a driveway on the right, we slow down and let it go. negative prompt: crash",
+        '{"prompt": "dashcam, a van pulls out of a driveway on the right, the car slows and lets it go", '
+        '"negative_prompt": "crash, smashed glass, blurry", "seed": 42}',
+        "dashcam, a van pulls out of a driveway on the right, we slow down and let it go --ar 16:9 --no crash, gore",
+        "dashcam, a van pulls out of a driveway on the right, we slow down and let it go\n - neg: collision, 3d render",
+    ],
+)
+def test_a_negative_prompt_is_not_read_as_the_scene(text):
+    r = read(text)
+    assert r.intent != "collision", text
+    assert [a.kind for a in r.actors] == ["van"]
+    assert {"crash", "collision"} & set(r.ignored), r.ignored  # (said to be not used)
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        (
+            "a cyclist pulls out of a side road on the left and we hit him. No negative effects on the rider.",
+            "collision",
+        ),
+        ("The test was negative: a cyclist pulls out of a side road on the left and we hit him.", "collision"),
+        ("a van cuts in and we crash into it, (crash:1.3), dashcam", "collision"),
+    ],
+)
+def test_negative_words_outside_a_prompts_label_stay_the_scene(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, kept, cut",
+    [
+        ("(wrong-way driver:1.4) on a motorway, (night:1.1)", "wrong-way driver on a motorway, night", []),
+        ("((near miss)) with a cyclist, [heavy rain:0.8]", "near miss with a cyclist, heavy rain", []),
+        ("a van brakes hard ahead::2 fog::0.5", "a van brakes hard ahead, fog,", []),
+        ("a bus pulls out --ar 16:9 --seed 1207 --motion 6", "a bus pulls out", ["ar", "seed", "motion"]),
+        # near misses: clocks, dates and brackets of an ordinary text are kept as they are
+        ("[18:12] Ellie: mum nearly hit a scooter guy", "[18:12] Ellie: mum nearly hit a scooter guy", []),
+        ("Obs. 7 (Thu 21 Sept, 14:32) a cyclist crossed", "Obs. 7 (Thu 21 Sept, 14:32) a cyclist crossed", []),
+        ("at 50 km/h (about 30 mph) -- then the car braked", "at 50 km/h (about 30 mph) -- then the car braked", []),
+    ],
+)
+def test_weights_and_settings_of_a_prompt(text, kept, cut):
+    out, aside = without_prompt_syntax(text)
+    assert " ".join(out.split()) == kept
+    assert aside == cut
+
+
+def test_a_weighted_behaviour_is_read_as_the_behaviour():
+    r = read("(wrong-way driver:1.4) on a dark dual carriageway, camera car in the left lane at 110 km/h, "
+             "(near miss:1.2), night")  # fmt: skip
+    assert [b[0] for b in r.actors[0].behaviours] == ["wrong_way"]
+    assert r.intent == "near_miss"
+
+
+# --- the camera car is the ego --------------------------------------------------------------------------
+def test_the_speed_of_the_camera_car_is_the_egos():
+    r = read("On a dark dual carriageway, camera car in the left lane at 110 km/h, a car comes straight at us "
+             "in our lane.")  # fmt: skip
+    assert r.ego_speed_mps == pytest.approx(110 * KPH)
+    assert [(a.kind, a.speed_mps) for a in r.actors] == [("car", None)]
+
+
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("Camera car stopped at the lights. A van behind us fails to stop and hits the camera car.", ["van"]),
+        ("Camera vehicle doing 30 mph. A man walks out on the left right in front of the camera vehicle.",
+         ["pedestrian"]),
+    ],
+)  # fmt: skip
+def test_the_camera_car_is_no_road_user_of_its_own(text, kinds):
+    r = read(text)
+    assert [a.kind for a in r.actors] == kinds
+    assert "camera" not in r.ignored
+
+
+# --- a line's stamp is when it was said or logged --------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, part",
+    [
+        (
+            "[00:03:05] Nadia: ok so the cyclist one. Late afternoon, low sun.\n"
+            "[00:03:11] Piet: we're doing about 40?\n"
+            "[00:03:14] Nadia: 40 k, and a cyclist comes out of a side road on the left, we brake hard.",
+            (12, 17),
+        ),
+        (
+            "Speaker 1 (02:40): the scooter at the school gates, early morning, we're at 20 mph\n"
+            "Speaker 2 (02:52): and he just rode off the kerb on the right in front of us?\n"
+            "Speaker 1 (02:55): yep, no contact",
+            (6, 11),
+        ),
+        (
+            "Grete Olsen  1:02\nRight, the bus. It was in the evening, raining, the bus pulls out from a stop on "
+            "our left.\n\nMo Tran  1:15\nand we stop behind it",
+            (18, 22),
+        ),
+    ],
+)
+def test_a_part_of_the_day_said_wins_over_the_stamps_of_the_lines(text, part):
+    hour = int(read(text).time.split(":")[0])
+    assert part[0] <= hour <= part[1], read(text).time
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        # a log or a live chat whose stamps are the clock, with no part of the day said: the stamp
+        ("[17:52] Sam: a lad on a scooter just shot out of a side road on my left\n[17:53] Sam: missed him", "17:52"),
+        # a clock said in a line, not a stamp of it
+        ("Time: 14:30\nA car pulls out of a side road on the left. Light rain, afternoon.", "14:30"),
+        ("Last Tuesday I left at 8:15\nA car pulled out of a side road on my left, in the morning rush.", "08:15"),
+    ],
+)
+def test_a_stamp_with_no_part_said_or_a_clock_said_stays_the_time(text, clock):
+    assert read(text).time == clock
+
+
+def test_line_stamps_are_found_by_their_place_in_the_line():
+    text = (
+        "[00:12:40] Sophie: right\nSpeaker 2 (00:31): so\nMarcus Feld  0:03\nGrace T  [10:31]\nNoor 15:02: a "
+        "cyclist\n00:00:02.100 --> 00:00:06.400\n07:48 Op observes\nTime: 14:30\nAt 7:40 a van\nI left at 9:15"
+    )
+    assert line_stamps(text) == {"00:12", "00:31", "00:03", "10:31", "15:02", "00:00", "07:48"}
+
+
+# --- a clock said as two numbers, and a greeting that opens a turn ----------------------------------------
+@pytest.mark.parametrize(
+    "said, clock",
+    [
+        ("it was one-forty in the morning , a", "01:40"),
+        ("about seven thirty at night", "19:30"),
+        ("ten fifteen pm", "22:15"),
+        ("six forty-five in the evening", "18:45"),
+        ("one forty cars a day", None),  # (no half of the day said: not a clock)
+        ("at six fifteen we turned", None),
+    ],
+)
+def test_an_hour_and_its_minutes_said_before_the_half_of_the_day(said, clock):
+    assert clock_in_words(said, []) == clock
+
+
+def test_a_greeting_opening_a_speakers_turn_is_no_time():
+    text = (
+        "INSPECTOR: Evening. Tell me what happened at the junction.\n"
+        "RIDER: I was cycling along and a car pulled out of the side road on my right at one-forty in the "
+        "morning.\nINSPECTOR: Go on."
+    )
+    assert speakers(text) == {"inspector"}  # (a label that opens two lines or more)
+    assert read(text).time == "01:40"
+
+
+def test_a_part_of_the_day_after_a_fields_label_is_the_time():
+    assert read("Time: evening.\nA car pulls out of a side road on the left.").time == "20:00"
