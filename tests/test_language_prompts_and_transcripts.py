@@ -178,3 +178,38 @@ def test_a_greeting_opening_a_speakers_turn_is_no_time():
 
 def test_a_part_of_the_day_after_a_fields_label_is_the_time():
     assert read("Time: evening.\nA car pulls out of a side road on the left.").time == "20:00"
+
+
+@pytest.mark.parametrize(
+    "text, part",
+    [
+        # a clock said in a turn after a question (which is set aside) wins over the stamps
+        (
+            "Speaker 1 (01:10): the van from Elm Road\nSpeaker 2 (01:14): it pulls out of Elm Road on our left "
+            "in front of us, we brake hard.\nSpeaker 1 (01:20): ok. When?\nSpeaker 2 (01:22): rush hour, 8:40, "
+            "dry.\nSpeaker 1 (01:30): thanks",
+            (8, 8),
+        ),
+        # a clock in words, after stamps
+        (
+            "[00:00:00] Recording started\n[00:00:04] Ola: a cyclist turns out of a side road on the right in "
+            "front of us.\n[00:00:15] Ola: It was ten past five, still light.",
+            (17, 17),
+        ),
+        # a part of the day that opens a turn and is told ("Evening, about 7") is the time, not a greeting
+        (
+            "[00:05:01] Bea: the jogger one, a jogger steps off the kerb on the left in front of us.\n"
+            "[00:05:09] Kofi: and the light?\n[00:05:12] Bea: Evening, about 7, still light.\n[00:05:20] Kofi: ok",
+            (18, 20),
+        ),
+        ("Wednesday, seven a.m. roughly, a car pulls out of a side road on the left in front of us.", (7, 7)),
+    ],
+)
+def test_a_time_told_in_a_transcript(text, part):
+    hour = int(read(text).time.split(":")[0])
+    assert part[0] <= hour <= part[1], read(text).time
+
+
+def test_a_greeting_with_a_comma_and_news_is_the_time():
+    text = "ANA: Morning, about 9, sunny. A van cut in.\nANA: that's all\nBEN: thanks"
+    assert 6 <= int(read(text).time.split(":")[0]) <= 11

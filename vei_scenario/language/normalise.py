@@ -1122,6 +1122,10 @@ def _heavy_vehicles(text: str) -> str:
     return re.sub(r"\bhv(s?)\b", r"lorry\1", text).replace("lorrys", "lorries")
 
 
+#: An hour said in words before its half of the day with the dots ("seven a.m.", "ten p.m"): a clock.
+_HOUR_WORD_HALF = re.compile(r"\b(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+([ap])\.\s?m\b\.?")
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -1146,6 +1150,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     # "@ 3 m/s", "car@30kph": the shorthand for "at" before a number, so the number keeps the grammar of
     # "at 3 m/s" (said of the one that acts), not of a bare number after a noun
     text = re.sub(r"\s*@\s*(?=[~\d])", " at ", text)
+    text = _HOUR_WORD_HALF.sub(lambda m: f"{_ONES[m.group(1)]} {m.group(2)}m", text)  # ("seven a.m.": "7 am")
     text = re.sub(r"(\d)\s*([ap])\.\s?m\.?", r"\1 \2m", text)  # "6 a.m.": "6 am" (no sentence ends there)
     text = re.sub(r"(\d)([ap]m)\b", r"\1 \2", text)  # "6pm": "6 pm"
     # the reader addressed ("you're doing 50 km/h", "your lane", "you brake hard"): the ego, as "I" is

@@ -3190,7 +3190,7 @@ def _read(text: str) -> Reading:
         r.map_kind = S.many_turns(said) or r.map_kind  # ("a small road with a lot of turns": a bend)
     if r.map_kind in (None, "straight") and S.signalled_junction(text, said):
         r.map_kind = "crossroad"  # ("ran the red", "at the Harbour Rd lights", "at Queen/Albert")
-    talking = S.speakers(text)  # (a greeting opens a speaker's turn: "OFFICER: Evening.")
+    talking = S.speakers(text)  # (a greeting opens a speaker's turn: "OFFICER: Evening.", not an answer)
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
@@ -3199,15 +3199,17 @@ def _read(text: str) -> Reading:
         or (
             m.slot == "time"
             and m.prev not in S.BOUNDS  # ("since midnight")
-            and not S.greeting(m.prev, m.words, m.next_, m.start > 1 and scanned[m.start - 2] in talking)
+            and not S.greeting(m.prev, m.words, m.next_, S.opens_a_turn(scanned, m.start, talking))
         )
     ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
     clocked = S.without_bounds(said)  # (the text's clocks of the time it happens)
     parts = [v for k, w, v in said_as if k == "time"]
-    clock = S.dotted_clock(clocked) or stated_clock(clocked) or S.log_clock(text, _vehicle_word)
-    if clock in S.line_stamps(text) and any(k == "time" and w not in S.TIME_HINTS for k, w, _ in said_as):
-        clock = None  # (a line's stamp, "[00:20:15] Ian: ... Dusk, the sun had just set": the part said)
-    clock = S.twelve_hour(clock, clocked, parts) or S.clock_in_words(clocked, parts)
+    stamps = S.line_stamps(text)  # (when each line was said or logged: "[00:20:15] Ian: ... Dusk, ...")
+    body = S.without_clocks(clocked, stamps)
+    clock = S.dotted_clock(body) or stated_clock(body) or S.log_clock(text, _vehicle_word)
+    clock = S.twelve_hour(clock, body, parts) or S.clock_in_words(body, parts)
+    if clock is None and not any(k == "time" and w not in S.TIME_HINTS for k, w, _ in said_as):
+        clock = stated_clock(clocked)  # (a log's or a chat's stamp, and nothing else said: when it happened)
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     plain = [(w, v) for k, w, v in said_as if k == "weather"]
     weather = S.weather_said([(m.words, m.value, m.prev) for _, ms in clauses for m in ms if m.slot == "weather"])

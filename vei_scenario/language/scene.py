@@ -162,6 +162,7 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
             break
         if _not_the_scene(sentence, names_road_user):
             aside += _words(sentence)
+            kept.append("\n" if "\n" in sep else "")  # (the line it ended still ends: "fine. Outcome?\n")
         else:
             kept.append(sentence + sep)
         k += 2

@@ -361,6 +361,11 @@ _AFTER_A_GREETING = frozenset(
 )
 
 
+#: What follows a greeting that opens a turn ("Evening.", "Morning all"); not a comma, after which the
+#: part of the day is told ("Evening, about 7, dry").
+_AFTER_A_TURNS_GREETING = _AFTER_A_GREETING - {",", ";", ":", "-"}
+
+
 def greeting(prev: str, words: str, next_: str, speaker: bool = False) -> bool:
     """Whether the time words ``words`` between the tokens ``prev`` and ``next_`` are a greeting ("Good
     morning.", "good evening all"); not "a good morning for a drive". A part of the day alone opening a
@@ -368,7 +373,7 @@ def greeting(prev: str, words: str, next_: str, speaker: bool = False) -> bool:
     "OFFICER: Evening. ...", "Paul: Morning all") greets too; after a field's label ("Time: evening.")
     it is the time."""
     parts = ("morning", "afternoon", "evening", "night", "day")
-    if speaker and prev == ":" and words in parts[:3] and next_ in _AFTER_A_GREETING:
+    if speaker and prev == ":" and words in parts[:3] and next_ in _AFTER_A_TURNS_GREETING:
         return True
     return prev in _GREETED and words in parts and next_ in _AFTER_A_GREETING
 
@@ -379,6 +384,36 @@ _SPEAKER_LABEL = re.compile(
     r"(?m)^[ \t]*(?:[\[(]?\d{1,2}:\d\d(?::\d\d)?[\])]?[ \t]+)?(?:[A-Za-z][\w.'-]*[ \t]+){0,3}([A-Za-z][\w'-]*)"
     r"(?:[ \t]*[\[(][\d:.]+[\])])?[ \t]*:(?!\d)"
 )
+
+
+def opens_a_turn(tokens: list[str], i: int, talking: frozenset[str]) -> bool:
+    """Whether the words at token ``i`` open a speaker's turn (right after a label of ``talking`` and its
+    colon) that answers no question: the turn before it, past its stamp, does not end with "?"
+    ("Keith: morning or afternoon? / Mandy: Morning, about 9." is an answer, not a greeting)."""
+    if i < 2 or tokens[i - 1] != ":" or tokens[i - 2] not in talking:
+        return False
+    k = i - 3
+    while k >= 0 and (tokens[k].isalpha() and tokens[k] not in talking) and k > i - 7:
+        k -= 1  # (the label's other words: "paul gren")
+    while k >= 0 and (tokens[k].isdigit() or tokens[k] in (":", ".", "[", "]", "(", ")")):
+        k -= 1  # (the stamp, and the line's end)
+    return k < 0 or tokens[k] != "?"
+
+
+def without_clocks(said: str, clocks: frozenset[str]) -> str:
+    """``said`` (the reader's tokens joined) without the clocks whose "HH:MM" is one of ``clocks`` (the
+    stamps of its lines)."""
+    if not clocks:
+        return said
+
+    def cut(m: re.Match) -> str:
+        return " " if f"{int(m.group(1)):02d}:{m.group(2)}" in clocks else m.group(0)
+
+    return _STAMP_SAID.sub(cut, said)
+
+
+#: A clock as the reader's tokens have it ("00 : 12 : 40", "0 : 03").
+_STAMP_SAID = re.compile(r"(?<!: )(?<!\d)\b(\d{1,2}) : ([0-5]\d)\b(?: : [0-5]\d\b)?")
 
 
 def speakers(text: str) -> frozenset[str]:
