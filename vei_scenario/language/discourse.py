@@ -3113,8 +3113,31 @@ def resolve(
     tokens = _named_speeds(tokens, kind_at, known, names)
     tokens = _speed_of_both(tokens, kind_at, known)
     tokens = _relative_of_ego(tokens)
-    tokens = _mentions_again(tokens, kind_at, known)
+    tokens = _mentions_again(_theirs_named_before(tokens, kind_at, known), kind_at, known)
     return tokens, dropped
+
+
+#: A third person's possessive before what they ride or drive ("his bike", "her car", "their van").
+_THIRD_PERSONS_OWN = frozenset(("his", "her", "their"))
+#: Kinds of what a rider named before rides ("a cyclist ... his bike"). A car is not among them: "his
+#: car" is as often the narrator's client's ("My insured ... struck the passenger side of his car").
+_RIDDEN = frozenset(("bicycle", "e-scooter"))
+
+
+def _theirs_named_before(tokens: list[str], kind_at: KindAt, known: Known) -> list[str]:
+    """ "A cyclist swerved in front of us. His bike was a metre from the bumper", "an artic cut in; his
+    trailer was 8 m ahead": a two-wheeler (or a trailer) said with a third person's possessive, of the
+    kind of a road user named before it, is that road user's own (said with "the", as a known one is),
+    not one more. A vehicle of a kind nobody before is ("a man ... his van") stays its own, and so do a
+    walker's animal ("a jogger with her dog") and a car ("his car" may be the narrator's client's)."""
+    out = list(tokens)
+    named: set[str] = set()
+    for p in road_user_phrases(tokens, kind_at, known):
+        ridden = p.kind in _RIDDEN or tokens[p.head : p.end] == ["trailer"]
+        if p.det in _THIRD_PERSONS_OWN and p.start == p.head - 1 and p.kind in named and ridden:
+            out[p.start] = "the"
+        named.add(p.kind)
+    return out
 
 
 def others_named(pronoun: str, narrator_subject: bool, group: list | None) -> bool:

@@ -600,6 +600,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
     if lem & _CONTACT_VERBS and _is_verb(w) and _verbal(words, i):
         if w.startswith("crash") and nxt in _COMPOUND_HEADS:
             return False
+        if "tag" in lem and _tags_a_record(words, i):
+            return False  # ("Safe, tag it.", "tagging as a safe pass": the event labelled, no one met)
         if "bump" in lem and prev in ("speed", "road"):
             return False  # ("put in speed bumps", "over the road bumps": the road's traffic calming)
         if _thing_subject(words, i) and not names_road_user(_object_of(words, i)):
@@ -625,6 +627,22 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
     return False
+
+
+#: What a label is given to: the event or the clip under review ("tag it", "tag this one").
+_THE_RECORD = frozenset(("it", "this", "that", "them", "these", "those"))
+
+
+def _tags_a_record(words: list[str], i: int) -> bool:
+    """Whether "tag" at ``i`` labels a record (a meeting's or a triage's "tag it as a near miss",
+    "tagging as safe", "Safe, tag it."), not a knock ("the van tagged it", "tagged my bumper"): "as"
+    follows it or its pronoun, or it opens its clause as a command on a bare "it"/"this"."""
+    after = words[i + 1 : i + 3]
+    if after[:1] == ["as"] or (after[:1] and after[0] in _THE_RECORD and after[1:2] == ["as"]):
+        return True
+    opens = i == 0 or words[i - 1] in _BREAK_PUNCT or words[i - 1] in ("so", "then", "just", "please", "and")
+    ends = len(words) <= i + 2 or words[i + 2] in _BREAK_PUNCT or words[i + 2] in ("one", "and", "then")
+    return opens and words[i] == "tag" and after[:1] != [] and after[0] in _THE_RECORD and ends
 
 
 #: Verbs of a body or a thing at rest against another ("leaned against my door", "stacked against

@@ -122,7 +122,14 @@ def ends_close_at_the_ego(tokens: list[str], start: int) -> bool:
     while stop < min(len(tokens), start + _WHERE_IT_ENDS) and tokens[stop] not in BREAKS:
         stop += 1
     place = _place(tokens, start, stop)
-    return place is not None and _close(tokens, start, place, stop)
+    if place is None:  # ("cuts back in way too early", "pulled in too soon": back before there was room)
+        return any(tokens[k] == "too" and tokens[k + 1] in _TOO_SOON for k in range(start + 1, stop - 1))
+    return _close(tokens, start, place, stop)
+
+
+#: Said after "too" of a pull-in, how it ends close in front of the one passed: it came in before there
+#: was room.
+_TOO_SOON = frozenset(("early", "soon", "quickly", "sharply", "tight", "tightly"))
 
 
 def mark(name: str, cfg: dict, tokens: list[str], start: int, end: int) -> None:
