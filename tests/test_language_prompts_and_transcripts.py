@@ -213,3 +213,99 @@ def test_a_time_told_in_a_transcript(text, part):
 def test_a_greeting_with_a_comma_and_news_is_the_time():
     text = "ANA: Morning, about 9, sunny. A van cut in.\nANA: that's all\nBEN: thanks"
     assert 6 <= int(read(text).time.split(":")[0]) <= 11
+
+
+# --- near misses a review found: prose dashes, a describing word before "camera car", a log's own clock -----
+@pytest.mark.parametrize(
+    "text, speed",
+    [
+        ("The van --no lights, no indicator-- pulled straight out in front of me and I hit it at 30.", None),
+        ("I was going 30 --maybe 35-- when the car ahead stopped dead and I hit it.", 35 * MPH),
+    ],
+)
+def test_a_double_dash_inside_prose_is_a_dash_not_a_setting(text, speed):
+    r = read(text)  # (read, not refused)
+    assert r.actors and r.actors[0].behaviours
+    if speed is not None:
+        assert r.ego_speed_mps == pytest.approx(speed, rel=0.01)
+
+
+def test_a_breath_test_negative_is_not_a_prompt():
+    out, aside = without_prompt_syntax("Breath test, negative: the driver said he braked for the cyclist.")
+    assert aside == [] and "the driver said" in out
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "4k photoreal dashcam. A motorbike filters between the lanes and clips our mirror.",
+        "dashcam clip, 8K, HDR, a motorbike filters between the lanes and clips our mirror",
+    ],
+)
+def test_a_resolution_tag_is_no_speed(text):
+    assert read(text).ego_speed_mps is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The Street View camera car in front of me stopped suddenly at 30 mph and I went into the back of it.",
+        "A police camera car was parked in the lay-by when a cyclist swerved out in front of me.",
+    ],
+)
+def test_a_camera_car_described_as_someone_elses_is_a_road_user(text):
+    assert "car" in [a.kind for a in read(text).actors]
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("Night shift log\n02:14 Patrol saw a car going the wrong way on the slip road. A lorry swerved.", "02:14"),
+        ("EVENING SHIFT HANDOVER\n18:05 Unit 12: a car changed lanes into a motorcycle on the A40.", "18:05"),
+        ("[07:41] Dave: morning lads, just seen a cyclist get doored on Park Lane\n[07:42] Dave: he's ok", "07:41"),
+        # a running time (a stamp with the hour 0) against a part said: the part
+        ("[00:05:12] Jake: late at night, pitch black, a guy on a scooter comes out of nowhere, I hit him.", "23:00"),
+    ],
+)
+def test_a_stamp_within_the_part_said_is_the_time_unless_it_runs_a_recording(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "said, parts, clock",
+    [
+        ("twelve thirty at night , empty motorway", [], "00:30"),
+        ("two-oh-five in the morning", [], "02:05"),
+    ],
+)
+def test_midnight_and_oh_minutes_said_in_words(said, parts, clock):
+    assert clock_in_words(said, parts) == clock
+
+
+def test_a_later_hour_in_the_half_the_part_says():
+    assert read("[00:01:10] Witness: It was about 9:15 at night, and a van ran the red light and hit a car.").time == (
+        "21:15"
+    )
+
+
+@pytest.mark.parametrize(
+    "text, part",
+    [
+        ("LAWYER: What time of day was it?\nWITNESS: Evening.\nLAWYER: And then?\nWITNESS: A taxi ran the red "
+         "light and hit a cyclist.", (18, 22)),
+        ("Q: Time of day?\nA: Afternoon. A child ran out between parked cars and I hit her.\nQ: Lighting?\nA: Good.",
+         (12, 17)),
+    ],
+)  # fmt: skip
+def test_a_part_of_the_day_that_answers_a_question_is_the_time(text, part):
+    hour = int(read(text).time.split(":")[0])
+    assert part[0] <= hour <= part[1]
+
+
+def test_standing_road_users_are_left_out_first():
+    text = (
+        "Queue at the lights: a bus, a taxi, a van, a lorry, a white car, a red car, a pickup and a minibus "
+        "were all waiting. Then a cyclist came up the inside and a pedestrian stepped out in front of me."
+    )
+    kinds = [a.kind for a in read(text).actors]
+    assert "bicycle" in kinds and "pedestrian" in kinds, kinds

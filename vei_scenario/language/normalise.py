@@ -20,6 +20,7 @@ from functools import lru_cache
 from vei_scenario.language import lexicon as L
 from vei_scenario.language import quantities as Q
 from vei_scenario.language import spoken_lengths
+from vei_scenario.language.function_words import BE, CLAUSE_BREAKS, DETERMINERS, PHRASE_ENDS
 from vei_scenario.language.imperative import imperative_as_ego
 from vei_scenario.language.lemmas import english, lemmas
 
@@ -1126,11 +1127,23 @@ def _heavy_vehicles(text: str) -> str:
 _HOUR_WORD_HALF = re.compile(r"\b(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+([ap])\.\s?m\b\.?")
 
 
+#: "camera car" after a word that describes it ("the Street View camera car", "a police camera car", "the
+#: speed camera car"): somebody else's car that carries a camera, not the one the clip is shot from.
+_DESCRIBED_CAMERA_CAR = re.compile(r"\b([a-z][a-z-]*) camera (car|vehicle|van)\b")
+#: Words that may stand before the clip's own camera car ("from the camera car", "then camera car brakes").
+_BEFORE_OWN_CAMERA_CAR = DETERMINERS | PHRASE_ENDS | CLAUSE_BREAKS | BE | {"so", "then", "as", "while", "when"}
+
+
+def _camera_car(m: re.Match) -> str:
+    return m.group(0) if m.group(1) in _BEFORE_OWN_CAMERA_CAR else f"{m.group(1)} {m.group(2)}"
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = _heavy_vehicles(text)
+    text = _DESCRIBED_CAMERA_CAR.sub(_camera_car, text)  # ("the speed camera car": a car of its own)
     text = imperative_as_ego(text)  # ("Follow a decelerating van": we follow it)
     # "ran his red", "passing their red light": the runner's own signal is the red light, said as any is
     text = re.sub(r"\b(?:his|her|their|its)\s+(?=red\b)", "the ", text)

@@ -3191,25 +3191,33 @@ def _read(text: str) -> Reading:
     if r.map_kind in (None, "straight") and S.signalled_junction(text, said):
         r.map_kind = "crossroad"  # ("ran the red", "at the Harbour Rd lights", "at Queen/Albert")
     talking = S.speakers(text)  # (a greeting opens a speaker's turn: "OFFICER: Evening.", not an answer)
+    greeted = {
+        m.start
+        for _, ms in clauses
+        for m in ms
+        if m.slot == "time" and S.greeting(m.prev, m.words, m.next_, S.opens_a_turn(scanned, m.start, talking))
+    }
     said_as = [
         (m.slot, m.words, m.value)
         for _, ms in clauses
         for m in ms
-        if m.slot == "weather"
-        or (
-            m.slot == "time"
-            and m.prev not in S.BOUNDS  # ("since midnight")
-            and not S.greeting(m.prev, m.words, m.next_, S.opens_a_turn(scanned, m.start, talking))
-        )
+        if m.slot == "weather" or (m.slot == "time" and m.prev not in S.BOUNDS and m.start not in greeted)
     ] + [("time", words, clock) for words, clock in S.day_halves(said)]  # ("Tues AM": the morning)
+    if greeted and not any(k == "time" for k, _, _ in said_as):
+        r.time = None  # (the only part of the day said greets: "OFFICER: Evening. Do you know why ...")
     clocked = S.without_bounds(said)  # (the text's clocks of the time it happens)
     parts = [v for k, w, v in said_as if k == "time"]
     stamps = S.line_stamps(text)  # (when each line was said or logged: "[00:20:15] Ian: ... Dusk, ...")
     body = S.without_clocks(clocked, stamps)
     clock = S.dotted_clock(body) or stated_clock(body) or S.log_clock(text, _vehicle_word)
     clock = S.twelve_hour(clock, body, parts) or S.clock_in_words(body, parts)
-    if clock is None and not any(k == "time" and w not in S.TIME_HINTS for k, w, _ in said_as):
-        clock = stated_clock(clocked)  # (a log's or a chat's stamp, and nothing else said: when it happened)
+    part = next((v for k, w, v in said_as if k == "time" and w not in S.TIME_HINTS), None)
+    if (
+        clock is None
+        and (part is None or not S.running_time(stamps))
+        and S.agrees(stamp := stated_clock(clocked), part)
+    ):
+        clock = stamp  # (a log's or a chat's stamp, within any part of the day said: when it happened)
     r.time = S.time_of_day([(w, v) for k, w, v in said_as if k == "time"], clock) or r.time
     plain = [(w, v) for k, w, v in said_as if k == "weather"]
     weather = S.weather_said([(m.words, m.value, m.prev) for _, ms in clauses for m in ms if m.slot == "weather"])
@@ -3405,16 +3413,27 @@ def _group_acts_as_one(actors: list[_Actor]) -> None:
 
 def _the_most_a_scenario_holds(actors: list[_Actor]) -> tuple[list[_Actor], list[str]]:
     """The road users a scenario holds (``MAX_ACTORS``) and the words of those left out. A long text
-    names more people and vehicles than act in it (a forum post's setup, a crowd): the ones that do
-    something are kept before those only placed, each group in the order the text names them, and
-    the rest are said to be not used rather than the whole description refused."""
+    names more people and vehicles than act in it (a forum post's setup, a queue): the ones that move
+    are kept first, then those said to do what the reader has no behaviour for, then those only standing
+    (:func:`_standing_rank`), each group in the order the text names them, and the rest are said to be
+    not used rather than the whole description refused."""
     if len(actors) <= MAX_ACTORS:
         return actors, []
-    ranked = sorted(range(len(actors)), key=lambda i: (not actors[i].behaviours, i))
+    ranked = sorted(range(len(actors)), key=lambda i: (_standing_rank(actors[i]), i))
     kept = sorted(ranked[:MAX_ACTORS])
     left = Counter(actors[i].word or actors[i].kind for i in sorted(ranked[MAX_ACTORS:]))
     named = ", ".join(word if n == 1 else f"{word} ({n})" for word, n in left.items())
     return [actors[i] for i in kept], [f"{len(actors)} road users, a scenario holds {MAX_ACTORS}: {named}"]
+
+
+def _standing_rank(a: _Actor) -> int:
+    """How little ``a`` does: 0 a move of its own, 1 nothing the reader has a behaviour for (what it
+    does is told otherwise: "the moped hit her"), 2 only standing or waiting ("a bus, two taxis ... were
+    all waiting")."""
+    names = {b[0] for b in a.behaviours}
+    if names - {"stop"} and not a.parked:
+        return 0
+    return 2 if names or a.stationary or a.parked else 1
 
 
 def _idle(a: _Actor) -> bool:

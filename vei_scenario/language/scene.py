@@ -162,7 +162,9 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
             break
         if _not_the_scene(sentence, names_road_user):
             aside += _words(sentence)
-            kept.append("\n" if "\n" in sep else "")  # (the line it ended still ends: "fine. Outcome?\n")
+            # (its question mark stays, so the answer after it is still one: "Q: Time of day? / A: Evening.";
+            # and the line it ended still ends: "fine. Outcome?\n")
+            kept.append(("?" if sentence.rstrip().endswith("?") else "") + ("\n" if "\n" in sep else " "))
         else:
             kept.append(sentence + sep)
         k += 2

@@ -153,7 +153,13 @@ _TWELVE_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b([1-6])(?: : |\.)[0-5]\d\b(?! (?
 def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
     """``clock`` read as the afternoon's where it is written as people write a twelve-hour clock ("at
     3:15") and no part of the day said beside it puts it in the small hours or the morning (``parts``:
-    the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15."""
+    the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15. A later
+    hour is read in the half the part said beside it puts it in ("about 9:15 at night": 21:15)."""
+    if clock is not None and 7 <= int(clock[:2]) <= 11:  # ("about 9:15 at night": the part says the half)
+        hour, pm = int(clock[:2]), int(clock[:2]) + 12
+        known = [p for p in parts if p in PART_OF_DAY_HOURS]
+        if known and _within(pm, known[0]) and not _within(hour, known[0]):
+            return f"{pm:02d}{clock[2:]}"
     if clock is None or _TWELVE_HOUR.search(said) is None or int(clock[:2]) > 6:
         return clock
     hour, pm = int(clock[:2]), int(clock[:2]) + 12
@@ -185,7 +191,9 @@ _OCLOCK = re.compile(rf"\b{_HOUR_WORD} o'?clock\b")
 #: An hour and its minutes said as two numbers before the half of the day ("one-forty in the morning",
 #: "seven thirty at night", "ten fifteen pm"); without a half said the words may be anything else.
 _SPOKEN_MINUTES = {
-    "oh five": 5, "ten": 10, "fifteen": 15, "twenty": 20, "twenty-five": 25, "twenty five": 25, "thirty": 30,
+    **{f"oh{sep}{w}": k for k, w in enumerate("one two three four five six seven eight nine".split(), 1)
+       for sep in (" ", "-")},
+    "ten": 10, "fifteen": 15, "twenty": 20, "twenty-five": 25, "twenty five": 25, "thirty": 30,
     "thirty-five": 35, "thirty five": 35, "forty": 40, "forty-five": 45, "forty five": 45, "fifty": 50,
     "fifty-five": 55, "fifty five": 55,
 }  # fmt: skip
@@ -193,6 +201,8 @@ _HOUR_AND_MINUTES = re.compile(
     rf"\b{_HOUR_WORD}[- ]({'|'.join(sorted(_SPOKEN_MINUTES, key=len, reverse=True))})"
     r"(?= (?:in the (?:morning|afternoon|evening)|at night|am|pm|a m|p m)\b)"
 )
+#: Said after a clock in words, the night: twelve is then midnight, not noon.
+_AT_NIGHT = re.compile(r"\b(?:at night|tonight)\b")
 #: Said beside a clock in words, the half of the day it is in.
 _AFTERNOON_SAID = re.compile(r"\b(?:in the (?:afternoon|evening)|at night|tonight|pm|p m)\b")
 #: (Not "am" after "i": "11 o'clock, I am on duty" is the verb, no half of the day.)
@@ -231,7 +241,7 @@ def clock_in_words(said: str, parts: list[str]) -> str | None:
     rest = said[m.end() : m.end() + 30]
     am, pm = hour % 12, hour % 12 + 12
     if _AFTERNOON_SAID.match(rest.strip()) or _AFTERNOON_SAID.search(rest[:16]):
-        hour = pm
+        hour = 0 if pm == 12 and _AT_NIGHT.search(rest[:16]) else pm  # ("twelve thirty at night": 00:30)
     elif _MORNING_SAID.search(rest[:16]):
         hour = am
     else:
@@ -331,14 +341,37 @@ def log_clock(text: str, is_vehicle: Callable[[str], bool]) -> str | None:
 
 #: A stamp of a line of a record: a clock or a running time opening the line ("[00:12:40] Sophie: ...",
 #: "07:48 Op observes ...", "00:00:02.100 --> ..."), or after a speaker's label and ending it ("Speaker 2
-#: (00:31): ...", "Noor 15:02: ...", "Marcus Feld  0:03" on a line of its own; a label is capitalised
+#: (00:31): ...", "Speaker 1: (00:05)", "Witness, 00:47:", "Noor 15:02: ...", "Marcus Feld  0:03" on a line
+#: of its own, "00:01.000 --> ..."; a label is capitalised
 #: words, a name or a role, not "I left at 9:15"). Only the first two fields
 #: are kept, as a clock is read ("01:12:03": "01:12").
-_STAMP = r"(?<![\d:])[\[(]?(\d{1,2}):([0-5]\d)(?::[0-5]\d(?:[.,]\d+)?)?[\])]?"
+_STAMP = r"(?<![\d:])[\[(]?(\d{1,2}):([0-5]\d)(?:[.,]\d+)?(?::[0-5]\d(?:[.,]\d+)?)?[\])]?"
 _LINE_STAMP = re.compile(
     rf"(?m)^[ \t]*(?:{_STAMP}(?=[ \t]|$)"
-    rf"|[A-Z][\w.'&-]*(?:[ \t]+(?:[A-Z0-9][\w.'&-]*|\([^()\n]{{1,24}}\))){{0,3}}[ \t]*{_STAMP}[ \t]*(?::|$))"
+    rf"|[A-Z][\w.'&-]*(?:[ \t]+(?:[A-Z0-9][\w.'&-]*|\([^()\n]{{1,24}}\))){{0,3}}"
+    rf"(?::[ \t]*[\[(]{_STAMP}|[ \t]*,?[ \t]*{_STAMP}[ \t]*(?::|$)))"
 )
+
+
+def running_time(stamps: frozenset[str]) -> bool:
+    """Whether a text's line stamps count a recording's or a meeting's running time, not the clock: one
+    has the hour 0 ("[00:03:12] A: ...", "Ella  00:03", "00:00:01,000 --> ..."). (A log kept past
+    midnight is read so too; its part of the day said, "night", is then the time.)"""
+    return any(stamp.startswith("00:") for stamp in stamps)
+
+
+def agrees(clock: str | None, part: str | None) -> bool:
+    """Whether ``clock`` lies within the part of the day ``part`` (the lexicon's clock of it), or within
+    ``CLOCK_SLACK_H`` of it; any clock agrees with no part said. A line's stamp that agrees is the time,
+    to the minute ("02:14 Patrol observed ..." on a night shift); one that does not is a recording's
+    running time or a meeting's clock ("[02:01] Kath: ... Afternoon.")."""
+    if clock is None or part is None or part not in PART_OF_DAY_HOURS:
+        return clock is not None
+    first, last = PART_OF_DAY_HOURS[part]
+    hour = int(clock.split(":")[0])
+    if (first <= hour <= last) if first <= last else (hour >= first or hour <= last):
+        return True
+    return min((first - hour) % 24, (hour - last) % 24) <= CLOCK_SLACK_H
 
 
 def line_stamps(text: str) -> frozenset[str]:
@@ -348,7 +381,7 @@ def line_stamps(text: str) -> frozenset[str]:
     day, that part is when what it tells of happened, and the stamp is not."""
     found = set()
     for m in _LINE_STAMP.finditer(text):
-        hour, minute = (m.group(1), m.group(2)) if m.group(1) is not None else (m.group(3), m.group(4))
+        hour, minute = next((h, mm) for h, mm in zip(m.groups()[::2], m.groups()[1::2]) if h is not None)
         found.add(f"{int(hour):02d}:{minute}")
     return frozenset(found)
 
@@ -387,11 +420,15 @@ _SPEAKER_LABEL = re.compile(
 
 
 def opens_a_turn(tokens: list[str], i: int, talking: frozenset[str]) -> bool:
-    """Whether the words at token ``i`` open a speaker's turn (right after a label of ``talking`` and its
-    colon) that answers no question: the turn before it, past its stamp, does not end with "?"
+    """Whether the words at token ``i`` open one of the first turns of a dialogue (right after a label of
+    ``talking`` and its colon, two turns at most before it) that answers no question: the turn before
+    it, past its stamp, does not end with "?"
     ("Keith: morning or afternoon? / Mandy: Morning, about 9." is an answer, not a greeting)."""
     if i < 2 or tokens[i - 1] != ":" or tokens[i - 2] not in talking:
         return False
+    turns_before = sum(tokens[k] in talking and tokens[k + 1] == ":" for k in range(i - 2))
+    if turns_before > 1:
+        return False  # (a greeting opens a dialogue: later, a part of the day said alone answers)
     k = i - 3
     while k >= 0 and (tokens[k].isalpha() and tokens[k] not in talking) and k > i - 7:
         k -= 1  # (the label's other words: "paul gren")
