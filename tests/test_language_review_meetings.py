@@ -69,3 +69,33 @@ def test_back_in_too_early_is_a_cut_in_after_the_overtake(text, cut_in):
 )
 def test_a_vehicle_said_with_its_owners_possessive_is_theirs(text, kinds):
     assert sorted(a.kind for a in read(text).actors) == sorted(kinds)
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        (
+            "A lorry pulled out into our lane 30 m ahead; we lifted off and settled in behind it, nothing dramatic.",
+            "safe",
+        ),
+        ("A bus pulled out of the stop ahead and we eased off. Nothing serious.", "safe"),
+        # near miss: "nothing but" says the opposite
+        ("A van cut in and left us nothing but a scary gap.", None),
+    ],
+)
+def test_nothing_dramatic_is_a_safe_pass(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text, speed",
+    [
+        ("We're fully stopped at the lights when a Golf comes up behind us and stops a foot off our bumper.", 0.0),
+        ("I'm stopped in the queue when a van behind me rolls into my back bumper.", 0.0),
+        ("We're stationary at the zebra when a cyclist comes up the inside.", 0.0),
+        # near misses: a contraction before a verb of going keeps the ego moving
+        ("We're doing 30 mph when a cyclist pulls out of a side road on the left.", 30 * 0.44704),
+    ],
+)
+def test_a_contracted_be_before_a_state_keeps_the_ego_at_rest(text, speed):
+    assert read(text).ego_speed_mps == pytest.approx(speed)

@@ -128,6 +128,8 @@ _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
      "trouble", "harm", "risk", "worry", "worries", "dramas", "interaction", "interactions")
 )  # fmt: skip
+#: Adjectives of trouble that "nothing" right before them denies: a safe pass ("nothing dramatic").
+_TROUBLING = frozenset(("dramatic", "serious", "scary", "critical", "untoward", "alarming", "dangerous", "hairy"))
 #: Nouns of a fuss that, denied right before them, state a safe pass ("no bother", "without any fuss");
 #: also verbs ("didn't bother to indicate"), so only as the noun of "no", "any" or "without".
 _FUSS = frozenset(("fuss", "bother", "hassle", "hassles", "bovver", "biggie", "palaver"))
@@ -2970,6 +2972,8 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
                 add("safe")  # ("no issues", "zero drama")
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
                 add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
+            elif w in _TROUBLING and words[i - 1 : i] == ["nothing"]:
+                add("safe")  # ("nothing dramatic", "nothing serious"; not "nothing but a scary gap")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i) and not _sign_off(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)

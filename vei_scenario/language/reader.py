@@ -431,6 +431,11 @@ def _normalised(text: str) -> str:
     return _NCAP_NAME.sub(_ncap_said, text)
 
 
+#: Words of standing still after "'m" / "'re", which keep their verb: "we're stopped" is a state, where
+#: "we stopped" would be a stop made.
+_STATES = frozenset(("stopped", "stationary", "stood", "sat", "parked", "halted", "fully", "completely", "already"))
+
+
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     """The words of ``text`` as the reader reads them (normalised; a misspelt word as the word it is
     one slip from, unless ``spell`` is false or the text writes the word only with its own capital,
@@ -447,6 +452,8 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
         elif "'" in tok and tok.split("'", 1)[1] == "t":  # "doesn't", "won't", "can't": the verb, then "not"
             stem = tok.split("'", 1)[0]
             out += [_CONTRACTED.get(stem, stem[:-1] if stem.endswith("n") else stem), "not"]
+        elif "'" in tok and tok.split("'", 1)[1] in ("re", "m") and found[k + 1 : k + 2] and found[k + 1] in _STATES:
+            out += [tok.split("'", 1)[0], "am" if tok.endswith("'m") else "are"]  # ("we're stopped": a state)
         elif "'" in tok and tok.split("'", 1)[1] in ("re", "m", "ve", "ll", "d"):
             out.append(tok.split("'", 1)[0])  # "we're": "we" (the rest carries nothing here)
         elif tok.endswith("'") or tok in ("'",):
