@@ -107,6 +107,8 @@ FIRST = {
     "language_independent_z54.json": ((50, 50, 7, 43), "measured when written"),
     "language_independent_z55.json": ((50, 50, 15, 46), "measured when written"),
     "language_independent_z56.json": ((50, 50, 11, 46), "measured when written"),
+    "language_independent_z57.json": ((50, 50, 14, 46), "measured when written"),
+    "language_independent_z58.json": ((50, 50, 11, 46), "measured when written"),
 }
 
 
