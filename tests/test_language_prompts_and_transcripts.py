@@ -309,3 +309,73 @@ def test_standing_road_users_are_left_out_first():
     )
     kinds = [a.kind for a in read(text).actors]
     assert "bicycle" in kinds and "pedestrian" in kinds, kinds
+
+
+# --- near misses a second review found -----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text, speed",
+    [
+        ("Setup? Ego car at 50 km/h follows a van at 45 km/h. Van brakes, ego stops 3 m behind.", 50 * KPH),
+        ("Who is liable here?\nMy car at 30 mph was following a bus at 20 mph. The bus braked and I went into it.",
+         30 * MPH),
+    ],
+)  # fmt: skip
+def test_a_question_set_aside_before_a_speed_leaves_it_the_subjects(text, speed):
+    assert read(text).ego_speed_mps == pytest.approx(speed)
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("1:40 in the morning, empty streets. A taxi ran the red light and I T-boned it at 30 mph.", "01:40"),
+        ("4:50 - afternoon rush. A motorcyclist filtering at 30 mph clipped my mirror.", "16:50"),
+        ("7:15 at night, foggy. The lorry in front braked hard and I went into the back of it.", "19:15"),
+        ("8:40 in the evening, raining. A cyclist turned right across me and I hit him.", "20:40"),
+    ],
+)
+def test_one_clock_opening_a_text_is_said_not_stamped(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text, part",
+    [
+        ("INVESTIGATOR: Start with the time of day.\nWITNESS: Afternoon. Sunny.\nINVESTIGATOR: And then?\n"
+         "WITNESS: A cyclist went through the red light and a car hit him.", (12, 17)),
+        ("Handler: Tell me when it happened, roughly.\nCustomer: Morning. School run.\nHandler: And what happened?\n"
+         "Customer: The car in front stopped and I went into it.", (6, 11)),
+    ],
+)  # fmt: skip
+def test_a_part_of_the_day_that_answers_a_request_is_the_time(text, part):
+    hour = int(read(text).time.split(":")[0])
+    assert part[0] <= hour <= part[1]
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A car pulled out of a side road in front of me at 30 mph --hit it square on", "collision"),
+        ("A cyclist came out of nowhere at the lights, I was doing 20 --stopped just in time", "near_miss"),
+    ],
+)
+def test_a_dash_at_a_lines_end_before_words_is_prose(text, intent):
+    assert read(text).intent == intent
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Positive: good mirror checks and road position.\nNegative: when the cyclist pulled out of the junction at "
+        "15 mph you braked late and stopped only a metre short.",
+        "Drugs wipe, negative: the driver of the van that rear-ended me was sober, he was doing 40. I was stopped.",
+    ],
+)
+def test_a_negative_label_before_a_sentence_is_no_prompt(text):
+    out, aside = without_prompt_syntax(text)
+    assert aside == [] and out == text
+    assert read(text).actors
+
+
+def test_a_speed_in_k_after_a_road_user_is_no_resolution_tag():
+    r = read("Cyclist 16k, ego 50k. Cyclist swerves into the ego lane 10 m ahead.")
+    assert r.actors[0].speed_mps == pytest.approx(16 * KPH)

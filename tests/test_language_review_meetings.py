@@ -41,7 +41,8 @@ def test_a_tag_of_a_road_user_or_a_vehicle_is_contact(text):
     "text, cut_in",
     [
         ("An artic comes past us in the right lane and cuts back in way too early.", True),
-        ("A van overtook us on the right and pulled in too soon.", True),
+        ("A van overtook us on the right and cut back in too soon.", True),
+        ("A van overtook a cyclist ahead of me and cut in too soon.", False),  # (in front of the cyclist)
         ("A coach swept past us and cut back in much too sharply.", True),
         ("A lorry overtook us and cut back in, well ahead.", False),
         ("An artic comes past us in the right lane and pulled back in.", False),

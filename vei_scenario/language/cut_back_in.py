@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.pull_in_apart import ends_close_at_the_ego, sudden
+from vei_scenario.language.pull_in_apart import ends_close_at_the_ego, sudden, too_soon
 from vei_scenario.language.stated import stated_lanes
 
 
@@ -46,8 +46,8 @@ def _sudden_return(m, tokens: list[str]) -> bool:
     """Whether ``m`` is a return said with a verb of a sudden move sideways ("cut back", "swerved back"),
     or such a verb + "in again" ("swung in again"): "again" after the particle says the road user is
     back where it was, the lane it pulled out of, as "back in" does."""
-    if m.slot == "returns":
-        return sudden(m.words.split()[0])
+    if m.slot == "returns":  # ("came back in way too early": a return before there was room is sudden too)
+        return sudden(m.words.split()[0]) or too_soon(tokens, m.start)
     again = m.slot in ("unknown_verb", "behaviour") and tokens[m.end : m.end + 2] == ["in", "again"]
     return again and len(m.words.split()) == 1 and sudden(m.words)
 

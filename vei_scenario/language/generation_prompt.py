@@ -31,16 +31,23 @@ _NEGATIVE = re.compile(
     (?:"(?P<quoted>[^"\n]*)"|(?P<line>[^\n]*))
     """
 )
-#: A generator's settings: the tail of a line made of double-dashed names and their values ("--ar 16:9
-#: --seed 1207", Midjourney's "--no crash, gore"). Only a tail: a double dash inside prose ("the van --no
-#: lights, no indicator-- pulled out", "going 30 --maybe 35-- when") closes again, and is a dash.
-_SETTINGS = re.compile(r"(?im)(?<=\s)--[a-z][\w-]*\b(?:(?!--)[^\n])*(?:\s--[a-z][\w-]*\b(?:(?!--)[^\n])*)*$")
+#: A generator's settings: the tail of a line made of double-dashed names, each with one value at most
+#: ("--ar 16:9 --seed 1207 --style raw"), and Midjourney's "--no" with its list ("--no crash, gore").
+#: Only such a tail: a dash in prose ("the van --no lights-- pulled out", "at 30 mph --hit it square on")
+#: closes again or goes on in words.
+#: The most words of an item of a negative prompt's list ("deformed bicycle", "distorted text on bus"); a
+#: sentence after "Negative:" is a critique ("Negative: when the cyclist pulled out you braked late").
+_ITEM_WORDS = 4
+_SETTING_ITEM = r"--(?:no[ \t]+(?:(?!--)[^\n])+?|[a-z][\w-]*(?:[ \t]+(?!--)\S+)?)"
+_SETTINGS = re.compile(rf"(?im)(?<=\s){_SETTING_ITEM}(?:[ \t]+{_SETTING_ITEM})*[ \t]*$")
 #: A resolution or quality tag of a clip ("4k photoreal", "8K, HDR"), which a reader of speeds would take
-#: for "4 k" (km/h): a number and "k" after no word of going, before a tag or a list's mark.
+#: for "4 k" (km/h): a number and "k" as an item of its own in a list of tags, or before a tag.
+_TAG = r"\b(?:2|4|5|6|8|12|16)k\b"
 _RESOLUTION = re.compile(
-    r"(?i)(?<!\bat )(?<!\bdoing )(?<!\babout )(?<!\bgoing )(?<!\bspeed )(?<!\bto )\b(?:2|4|5|6|8|12|16)k\b"
-    r"(?=\s*(?:[,.;)|]|$|(?:uhd|hdr|photo\w*|video|footage|resolution|render\w*|quality|cinematic|realistic|"
-    r"dashcam|ultra|hyper\w*|\d+\s*fps|\d+p)\b))"
+    rf"(?im)(?:^|(?<=[,(|:])|(?<=[,(|:]\s)){_TAG}(?=\s*(?:[,.;)|]|$))"
+    rf"|(?<!\bat )(?<!\bdoing )(?<!\babout )(?<!\bgoing )(?<!\bspeed )(?<!\bto ){_TAG}"
+    r"(?=\s+(?:uhd|hdr|photo\w*|video|footage|resolution|render\w*|quality|cinematic|realistic|"
+    r"dashcam|ultra|hyper\w*|\d+\s*fps|\d+p)\b)"
 )
 #: A weighted phrase: "(heavy rain:1.3)", "[night:0.8]" (words, then a weight of one digit and its
 #: decimals: not a clock, "[18:12]", "(Thu, 14:32)").
@@ -60,7 +67,12 @@ def without_prompt_syntax(text: str) -> tuple[str, list[str]]:
         aside.extend(re.findall(r"[a-z][a-z'-]*", m.group(0).lower()))
         return " "
 
-    text = _NEGATIVE.sub(cut, text)
+    def cut_a_list(m: re.Match) -> str:  # (a list of things not to show, not a sentence: "Negative: when ...")
+        listed = m.group("quoted") if m.group("quoted") is not None else m.group("line")
+        items = [x.split() for x in re.split(r"[,;|]", listed.strip().rstrip("."))]
+        return cut(m) if all(len(x) <= _ITEM_WORDS for x in items) else m.group(0)
+
+    text = _NEGATIVE.sub(cut_a_list, text)
     text = _SETTINGS.sub(cut, text)
     text = _RESOLUTION.sub(cut, text)
     text = _WEIGHTED.sub(r"\1", text)

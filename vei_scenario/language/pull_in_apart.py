@@ -122,9 +122,21 @@ def ends_close_at_the_ego(tokens: list[str], start: int) -> bool:
     while stop < min(len(tokens), start + _WHERE_IT_ENDS) and tokens[stop] not in BREAKS:
         stop += 1
     place = _place(tokens, start, stop)
-    if place is None:  # ("cuts back in way too early", "pulled in too soon": back before there was room)
-        return any(tokens[k] == "too" and tokens[k + 1] in _TOO_SOON for k in range(start + 1, stop - 1))
+    if place is None:  # ("cuts back in way too early": back before there was room)
+        return too_soon(tokens, start)
     return _close(tokens, start, place, stop)
+
+
+def too_soon(tokens: list[str], start: int) -> bool:
+    """Whether the return whose verb is at ``tokens[start]`` ("cut back in", "came back into my lane") is
+    said to come "too early", "too soon" or "too tight" in its clause: back before there was room, close
+    in front of the one it passed."""
+    if tokens[start + 1 : start + 2] != ["back"]:
+        return False  # (a return: "cut in too soon" after passing someone else is that one's)
+    stop = start + 1
+    while stop < min(len(tokens), start + _WHERE_IT_ENDS) and tokens[stop] not in BREAKS:
+        stop += 1
+    return any(tokens[k] == "too" and tokens[k + 1] in _TOO_SOON for k in range(start + 1, stop - 1))
 
 
 #: Said after "too" of a pull-in, how it ends close in front of the one passed: it came in before there

@@ -259,7 +259,7 @@ _MODALS = frozenset({"will", "shall", "should", "must", "would", "can", "could",
 _BE = frozenset({"is", "was", "are", "were", "am", "be"})
 _AUXILIARIES = frozenset({"is", "was", "are", "were", "am", "be", "been", "'s", "still", "also", "then", "just"})
 #: Words after which a noun opens a clause, as its subject ("; the bus at 15 km/h", "and the van at 60").
-_CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "and", "but", "while", "whereas", "when", "then", "as"})
+_CLAUSE_OPENERS = frozenset({",", ";", ":", ".", "?", "!", "and", "but", "while", "whereas", "when", "then", "as"})
 OBJECT_PRONOUNS = frozenset({"me", "us", "him", "her", "them", "it", "you"})
 _DETERMINERS = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their", "his", "her"})
 
@@ -1101,7 +1101,7 @@ _SLOWING = frozenset(
 #: from"): it reaches Y. ("speed" is not one: "my speed from 50 mph to 30 mph" says neither.)
 _SPEEDING_UP = frozenset(("accelerate", "acceleration", "increase", "climb", "rise", "pick", "build", "gather", "up"))
 #: Words that end the clause of a change's verb, going back ("I braked, then accelerated from ...").
-_BEFORE_THE_VERB = frozenset((",", ";", ":", ".", "and", "then", "but", "when", "while", "as", "after"))
+_BEFORE_THE_VERB = frozenset((",", ";", ":", ".", "?", "!", "and", "then", "but", "when", "while", "as", "after"))
 
 
 def _slowing(tokens: list[str], k: int, first: float, second: float) -> bool:
@@ -1241,7 +1241,7 @@ def _subject_before(tokens: list[str], k: int, mention_ending_at: Mentions) -> i
 
 #: Words before a road user that introduce it as the subject or the thing that is there ("ahead is a
 #: cyclist", "there is a tractor", "; a jogger").
-_INTRODUCING = frozenset({"is", "are", "was", "were", ",", ";", ":", ".", "and"})
+_INTRODUCING = frozenset({"is", "are", "was", "were", ",", ";", ":", ".", "?", "!", "and"})
 #: How many words a note may run between the road user it follows and its speed.
 _NOTE_REACH = 8
 

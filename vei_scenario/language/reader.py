@@ -524,7 +524,25 @@ _PLACE_PREPOSITIONS = {"at", "to", "near", "by", "from", "behind", "past", "towa
 
 
 #: Words after which an article opens a new subject ("... and a unicorn runs out"), not an object.
-_OPENERS = {"", ".", ";", ",", ":", "and", "then", "when", "while", "as", "but", "suddenly", "until", "before", "after"}
+_OPENERS = {
+    "",
+    ".",
+    "?",
+    "!",
+    ";",
+    ",",
+    ":",
+    "and",
+    "then",
+    "when",
+    "while",
+    "as",
+    "but",
+    "suddenly",
+    "until",
+    "before",
+    "after",
+}
 
 
 def _does_next(tokens: list[str], i: int) -> bool:

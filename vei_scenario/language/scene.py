@@ -162,9 +162,11 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
             break
         if _not_the_scene(sentence, names_road_user):
             aside += _words(sentence)
-            # (its question mark stays, so the answer after it is still one: "Q: Time of day? / A: Evening.";
-            # and the line it ended still ends: "fine. Outcome?\n")
-            kept.append(("?" if sentence.rstrip().endswith("?") else "") + ("\n" if "\n" in sep else " "))
+            # (the line it ended still ends, "fine. Outcome?\n", and a question's mark with it, so the next
+            # line answers it: "Q: Time of day? / A: Evening.")
+            label = _TURN_LABEL.match(sentence)  # (a dialogue's turn keeps its speaker: "INVESTIGATOR: ?")
+            ends = ("?\n" if sentence.rstrip().endswith("?") else "\n") if "\n" in sep else " "
+            kept.append((label.group(0) if label else "") + ends)
         else:
             kept.append(sentence + sep)
         k += 2
@@ -172,6 +174,12 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
     if not scene or (names_road_user(text) and not names_road_user(scene)):
         return text, cut
     return scene, aside
+
+
+#: A speaker's label opening a line, after any stamp ("OFFICER: ", "[00:01:10] Ms Lee: ").
+_TURN_LABEL = re.compile(
+    r"^\s*(?:[\[(]?\d{1,2}:\d\d(?::\d\d)?[\])]?[ \t]+)?[A-Z][\w.'-]*(?:[ \t]+[\w.'()-]+){0,3}:[ \t]"
+)
 
 
 def _options_follow(rest: str) -> bool:

@@ -155,6 +155,13 @@ def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
     3:15") and no part of the day said beside it puts it in the small hours or the morning (``parts``:
     the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15. A later
     hour is read in the half the part said beside it puts it in ("about 9:15 at night": 21:15)."""
+    if clock is not None and 1 <= int(clock[:2]) <= 12:  # ("7:15 at night", "8:40 in the evening")
+        hour, minute = int(clock[:2]), clock[3:]
+        half = re.search(rf"\b0?{hour} : {minute} (?:in the (?:afternoon|evening)|at night|tonight)\b", said)
+        if half is not None and "night" in half.group(0):  # ("2:30 at night": the small hours; "7:15 at night")
+            return f"{0 if hour == 12 else hour if hour <= 5 else hour + 12:02d}:{minute}"
+        if half is not None:
+            return f"{hour % 12 + 12:02d}:{minute}"
     if clock is not None and 7 <= int(clock[:2]) <= 11:  # ("about 9:15 at night": the part says the half)
         hour, pm = int(clock[:2]), int(clock[:2]) + 12
         known = [p for p in parts if p in PART_OF_DAY_HOURS]
@@ -374,16 +381,24 @@ def agrees(clock: str | None, part: str | None) -> bool:
     return min((first - hour) % 24, (hour - last) % 24) <= CLOCK_SLACK_H
 
 
+#: A speaker's label right after a stamp ("00:05:11 Kerry: ..."): the clock stamps a turn.
+_SPEAKER_AFTER = re.compile(r"[ \t]*[A-Z][\w.'-]*(?:[ \t]+[\w.'()-]+){0,3}:[ \t]")
+
+
 def line_stamps(text: str) -> frozenset[str]:
     """The clocks ("HH:MM") of the stamps that open the lines of the original ``text`` or end their
     speakers' labels. A stamp says when a line was logged, said or shown (a meeting transcript's
     running time, an audio-description cue, a log's entry): where the text also says a part of the
-    day, that part is when what it tells of happened, and the stamp is not."""
-    found = set()
+    day, that part is when what it tells of happened, and the stamp is not. A record stamps two lines
+    or more, or marks its stamp (brackets, a speaker's label beside it): one bare clock opening a text
+    ("1:40 in the morning, empty streets.") is said, not stamped."""
+    found, marked = [], False
     for m in _LINE_STAMP.finditer(text):
         hour, minute = next((h, mm) for h, mm in zip(m.groups()[::2], m.groups()[1::2]) if h is not None)
-        found.add(f"{int(hour):02d}:{minute}")
-    return frozenset(found)
+        found.append(f"{int(hour):02d}:{minute}")
+        said = m.group(0).strip()
+        marked = marked or said[:1] in "[(" or not said[:1].isdigit() or bool(_SPEAKER_AFTER.match(text, m.end()))
+    return frozenset(found) if len(found) > 1 or marked else frozenset()  # (one bare clock opening a text is said)
 
 
 #: A greeting with a part of the day ("Good afternoon.", "good evening all"): when a message is written,
@@ -419,16 +434,21 @@ _SPEAKER_LABEL = re.compile(
 )
 
 
+#: Words a dialogue's greeting opens with, which a greeting in the next turn returns ("Dad: Evening. /
+#: Son: Evening.").
+_GREETS = frozenset(("morning", "afternoon", "evening", "hello", "hi", "hey", "good", "hiya"))
+
+
 def opens_a_turn(tokens: list[str], i: int, talking: frozenset[str]) -> bool:
-    """Whether the words at token ``i`` open one of the first turns of a dialogue (right after a label of
-    ``talking`` and its colon, two turns at most before it) that answers no question: the turn before
-    it, past its stamp, does not end with "?"
+    """Whether the words at token ``i`` open a dialogue's first turn, or the second where the first greets
+    (right after a label of ``talking`` and its colon), and answer no question: the turn before it,
+    past its stamp, does not end with "?"
     ("Keith: morning or afternoon? / Mandy: Morning, about 9." is an answer, not a greeting)."""
     if i < 2 or tokens[i - 1] != ":" or tokens[i - 2] not in talking:
         return False
-    turns_before = sum(tokens[k] in talking and tokens[k + 1] == ":" for k in range(i - 2))
-    if turns_before > 1:
-        return False  # (a greeting opens a dialogue: later, a part of the day said alone answers)
+    turns = [k for k in range(i - 2) if tokens[k] in talking and tokens[k + 1] == ":"]
+    if len(turns) > 1 or (turns and tokens[turns[0] + 2 : turns[0] + 3] != [] and tokens[turns[0] + 2] not in _GREETS):
+        return False  # (a greeting opens a dialogue or returns one: later, a part of the day said alone answers)
     k = i - 3
     while k >= 0 and (tokens[k].isalpha() and tokens[k] not in talking) and k > i - 7:
         k -= 1  # (the label's other words: "paul gren")
