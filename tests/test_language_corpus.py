@@ -123,7 +123,7 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z54.json": (50, 8),
     ROOT / "tests" / "data" / "language_independent_z55.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z56.json": (50, 14),
-    ROOT / "tests" / "data" / "language_independent_z57.json": (50, 17),
+    ROOT / "tests" / "data" / "language_independent_z57.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z58.json": (50, 18),
 }
 

@@ -379,3 +379,83 @@ def test_a_negative_label_before_a_sentence_is_no_prompt(text):
 def test_a_speed_in_k_after_a_road_user_is_no_resolution_tag():
     r = read("Cyclist 16k, ego 50k. Cyclist swerves into the ego lane 10 m ahead.")
     assert r.actors[0].speed_mps == pytest.approx(16 * KPH)
+
+
+# --- near misses a third review found ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A motorbike squeezed past at 40 mph and tagged it as it went by. My mirror.",
+        "The lorry tagged them as it went past, both mirrors gone.",
+    ],
+)
+def test_tagged_as_it_went_by_is_contact(text):
+    assert read(text).intent == "collision"
+
+
+@pytest.mark.parametrize(
+    "text, intent",
+    [
+        ("A van pulled out of a side road in front of me, I was doing 30 mph --hit it", "collision"),
+        ("A kid ran out in front of me at 20 mph --missed him", "near_miss"),
+    ],
+)
+def test_one_dashed_word_group_at_a_lines_end_is_prose(text, intent):
+    assert read(text).intent == intent
+
+
+def test_a_speed_in_k_after_a_label_is_a_speed():
+    r = read("Ego speed: 50k. Cyclist speed: 16k. The cyclist swerves into the ego lane 10 m ahead.")
+    assert r.actors[0].speed_mps == pytest.approx(16 * KPH)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "The camera car in front of me braked suddenly at 30 mph and I rear-ended it.",
+        "I was following a camera car at 30 km/h when it braked hard.",
+    ],
+)
+def test_a_camera_car_placed_from_the_narrator_is_another_road_user(text):
+    assert [a.kind for a in read(text).actors] == ["car"]
+
+
+@pytest.mark.parametrize(
+    "text, clock",
+    [
+        ("At 9:20 we set off. The night before it had snowed. A van slid across into our lane.", "09:20"),
+        ("At 11:10, after the night shift, I cycled home and a car pulled out of a side road.", "11:10"),
+    ],
+)
+def test_night_said_apart_from_a_clock_leaves_its_half(text, clock):
+    assert read(text).time == clock
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Pika prompt: a cyclist swerves in front of a car, dusk, aspect ratio 9:16, cinematic",
+        "dashcam, a cyclist swerves in front of the camera car, evening, 9:16 vertical",
+    ],
+)
+def test_an_aspect_ratio_is_no_clock(text):
+    r = read(text)
+    assert r.time is None or not r.time.endswith(":16")
+
+
+def test_the_road_user_that_manoeuvres_is_kept_over_those_going_on():
+    text = (
+        "Rush hour: a taxi at 20 km/h, a bus at 15 km/h, a cyclist at 15 km/h, a car at 30 km/h, another car at "
+        "25 km/h, a van at 25 km/h, a lorry at 20 km/h and a motorbike at 35 km/h were all going round. Then a "
+        "tractor pulled out in front of me and I hit it."
+    )
+    assert any(b[0] in ("cut_in", "turn_into") for a in read(text).actors for b in a.behaviours)
+
+
+def test_feedback_with_a_positive_label_keeps_its_negative():
+    out, aside = without_prompt_syntax("Driving test feedback. Positive: good mirrors. Negative: hit a cyclist.")
+    assert aside == [] and "hit a cyclist" in out
+
+
+def test_sat_in_traffic_contracted_is_at_rest():
+    assert read("We're sat in traffic on the bypass when a van rolls into our back bumper.").ego_speed_mps == 0.0

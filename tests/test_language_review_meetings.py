@@ -73,22 +73,6 @@ def test_a_vehicle_said_with_its_owners_possessive_is_theirs(text, kinds):
 
 
 @pytest.mark.parametrize(
-    "text, intent",
-    [
-        (
-            "A lorry pulled out into our lane 30 m ahead; we lifted off and settled in behind it, nothing dramatic.",
-            "safe",
-        ),
-        ("A bus pulled out of the stop ahead and we eased off. Nothing serious.", "safe"),
-        # near miss: "nothing but" says the opposite
-        ("A van cut in and left us nothing but a scary gap.", None),
-    ],
-)
-def test_nothing_dramatic_is_a_safe_pass(text, intent):
-    assert read(text).intent == intent
-
-
-@pytest.mark.parametrize(
     "text, speed",
     [
         ("We're fully stopped at the lights when a Golf comes up behind us and stops a foot off our bumper.", 0.0),

@@ -39,12 +39,14 @@ _NEGATIVE = re.compile(
 #: sentence after "Negative:" is a critique ("Negative: when the cyclist pulled out you braked late").
 _ITEM_WORDS = 4
 _SETTING_ITEM = r"--(?:no[ \t]+(?:(?!--)[^\n])+?|[a-z][\w-]*(?:[ \t]+(?!--)\S+)?)"
-_SETTINGS = re.compile(rf"(?im)(?<=\s){_SETTING_ITEM}(?:[ \t]+{_SETTING_ITEM})*[ \t]*$")
+_SETTINGS = re.compile(
+    rf"(?im)(?<=\s)(?:{_SETTING_ITEM}(?:[ \t]+{_SETTING_ITEM})+|--[a-z][\w-]*[ \t]+[\w.:/-]*\d[\w.:/-]*)[ \t]*$"
+)  # (two settings or more, or one with a figure: "--ar 16:9"; "at 30 mph --hit it" is a dash in prose)
 #: A resolution or quality tag of a clip ("4k photoreal", "8K, HDR"), which a reader of speeds would take
 #: for "4 k" (km/h): a number and "k" as an item of its own in a list of tags, or before a tag.
 _TAG = r"\b(?:2|4|5|6|8|12|16)k\b"
 _RESOLUTION = re.compile(
-    rf"(?im)(?:^|(?<=[,(|:])|(?<=[,(|:]\s)){_TAG}(?=\s*(?:[,.;)|]|$))"
+    rf"(?im)(?:^|(?<=[,|])|(?<=[,|]\s)){_TAG}(?=\s*(?:[,.;|]|$))"
     rf"|(?<!\bat )(?<!\bdoing )(?<!\babout )(?<!\bgoing )(?<!\bspeed )(?<!\bto ){_TAG}"
     r"(?=\s+(?:uhd|hdr|photo\w*|video|footage|resolution|render\w*|quality|cinematic|realistic|"
     r"dashcam|ultra|hyper\w*|\d+\s*fps|\d+p)\b)"
@@ -58,6 +60,18 @@ _EMPHASIS = re.compile(r"\({2,}\s*([^()\n]+?)\s*\){2,}")
 _MULTI = re.compile(r"::\s*-?\d+(?:\.\d+)?")
 
 
+#: A clip's aspect ratio after its name ("aspect ratio 9:16", "-ar 16:9", "ratio: 21:9") or before a word
+#: of its shape ("9:16 vertical"): not a clock.
+_ASPECT = re.compile(
+    r"(?i)(?:\b(?:aspect(?:[ _]ratio)?|ratio|-{1,2}ar)\b[\s:=\"']*\d{1,2}(?:\.\d+)?:\d{1,2}\b"
+    r"|\b\d{1,2}(?:\.\d+)?:\d{1,2}(?=\s*(?:vertical|widescreen|portrait|landscape|format|aspect)\b))"
+)
+
+
+#: A "Positive:" label: beside it, "Negative:" lists what went badly (feedback, a review), no prompt's.
+_POSITIVE = re.compile(r"(?im)(?:^|[.;]\s)\W*positives?\s*:")
+
+
 def without_prompt_syntax(text: str) -> tuple[str, list[str]]:
     """(``text`` with negative prompts and settings cut out and weights taken off their phrases, the
     words cut out)."""
@@ -67,7 +81,11 @@ def without_prompt_syntax(text: str) -> tuple[str, list[str]]:
         aside.extend(re.findall(r"[a-z][a-z'-]*", m.group(0).lower()))
         return " "
 
+    pros_and_cons = _POSITIVE.search(text) is not None  # ("Positive: good mirrors. Negative: hit a cyclist")
+
     def cut_a_list(m: re.Match) -> str:  # (a list of things not to show, not a sentence: "Negative: when ...")
+        if pros_and_cons:
+            return m.group(0)
         listed = m.group("quoted") if m.group("quoted") is not None else m.group("line")
         items = [x.split() for x in re.split(r"[,;|]", listed.strip().rstrip("."))]
         return cut(m) if all(len(x) <= _ITEM_WORDS for x in items) else m.group(0)
@@ -75,6 +93,7 @@ def without_prompt_syntax(text: str) -> tuple[str, list[str]]:
     text = _NEGATIVE.sub(cut_a_list, text)
     text = _SETTINGS.sub(cut, text)
     text = _RESOLUTION.sub(cut, text)
+    text = _ASPECT.sub(cut, text)
     text = _WEIGHTED.sub(r"\1", text)
     text = _EMPHASIS.sub(r"\1", text)
     text = _MULTI.sub(",", text)

@@ -1127,15 +1127,22 @@ def _heavy_vehicles(text: str) -> str:
 _HOUR_WORD_HALF = re.compile(r"\b(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s+([ap])\.\s?m\b\.?")
 
 
-#: "camera car" after a word that describes it ("the Street View camera car", "a police camera car", "the
-#: speed camera car"): somebody else's car that carries a camera, not the one the clip is shot from.
+#: "camera car" after a word that describes it or an indefinite article ("the Street View camera car", "a
+#: police camera car", "a camera car"): somebody else's car that carries a camera, not the clip's own.
 _DESCRIBED_CAMERA_CAR = re.compile(r"\b([a-z][a-z-]*) camera (car|vehicle|van)\b")
 #: Words that may stand before the clip's own camera car ("from the camera car", "then camera car brakes").
 _BEFORE_OWN_CAMERA_CAR = DETERMINERS | PHRASE_ENDS | CLAUSE_BREAKS | BE | {"so", "then", "as", "while", "when"}
 
 
 def _camera_car(m: re.Match) -> str:
-    return m.group(0) if m.group(1) in _BEFORE_OWN_CAMERA_CAR else f"{m.group(1)} {m.group(2)}"
+    own = m.group(1) in _BEFORE_OWN_CAMERA_CAR and m.group(1) not in ("a", "an", "another")
+    return m.group(0) if own else f"{m.group(1)} {m.group(2)}"
+
+
+#: The camera car placed from the narrator ("the camera car in front of me"): another's.
+_CAMERA_CAR_FROM_ME = re.compile(
+    r"\bcamera (car|vehicle|van)(?= (?:in front of|ahead of|behind|beside|next to) (?:me|us)\b)"
+)
 
 
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
@@ -1144,6 +1151,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     or None."""
     text = _heavy_vehicles(text)
     text = _DESCRIBED_CAMERA_CAR.sub(_camera_car, text)  # ("the speed camera car": a car of its own)
+    text = _CAMERA_CAR_FROM_ME.sub(r"\1", text)  # ("the camera car in front of me": not the one I drive)
     text = imperative_as_ego(text)  # ("Follow a decelerating van": we follow it)
     # "ran his red", "passing their red light": the runner's own signal is the red light, said as any is
     text = re.sub(r"\b(?:his|her|their|its)\s+(?=red\b)", "the ", text)

@@ -128,8 +128,6 @@ _TROUBLE = frozenset(
     ("issue", "issues", "problem", "problems", "conflict", "conflicts", "danger", "drama", "incident", "incidents",
      "trouble", "harm", "risk", "worry", "worries", "dramas", "interaction", "interactions")
 )  # fmt: skip
-#: Adjectives of trouble that "nothing" right before them denies: a safe pass ("nothing dramatic").
-_TROUBLING = frozenset(("dramatic", "serious", "scary", "critical", "untoward", "alarming", "dangerous", "hairy"))
 #: Nouns of a fuss that, denied right before them, state a safe pass ("no bother", "without any fuss");
 #: also verbs ("didn't bother to indicate"), so only as the noun of "no", "any" or "without".
 _FUSS = frozenset(("fuss", "bother", "hassle", "hassles", "bovver", "biggie", "palaver"))
@@ -639,9 +637,19 @@ def _tags_a_record(words: list[str], i: int) -> bool:
     """Whether "tag" at ``i`` labels a record (a meeting's or a triage's "tag it as a near miss",
     "tagging as safe", "Safe, tag it."), not a knock ("the van tagged it", "tagged my bumper"): "as"
     follows it or its pronoun, or it opens its clause as a command on a bare "it"/"this"."""
-    after = words[i + 1 : i + 3]
-    if after[:1] == ["as"] or (after[:1] and after[0] in _THE_RECORD and after[1:2] == ["as"]):
-        return True
+    after = words[i + 1 : i + 4]
+    label_at = 1 if after[:1] == ["as"] else 2 if after[:1] and after[0] in _THE_RECORD and after[1:2] == ["as"] else 0
+    if label_at:  # ("tag it as a near miss"; not "tagged it as it went by", a clause of time)
+        return after[label_at : label_at + 1] not in (
+            ["it"],
+            ["he"],
+            ["she"],
+            ["they"],
+            ["we"],
+            ["i"],
+            ["you"],
+            ["the"],
+        )
     opens = i == 0 or words[i - 1] in _BREAK_PUNCT or words[i - 1] in ("so", "then", "just", "please", "and")
     ends = len(words) <= i + 2 or words[i + 2] in _BREAK_PUNCT or words[i + 2] in ("one", "and", "then")
     return opens and words[i] == "tag" and after[:1] != [] and after[0] in _THE_RECORD and ends
@@ -2972,8 +2980,6 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
                 add("safe")  # ("no issues", "zero drama")
             elif w in _FUSS and words[i - 1 : i] in (["no"], ["any"], ["without"]) and _denied_before(words, i):
                 add("safe")  # ("no fuss", "without any bother", "no hassle"; not "didn't bother to look")
-            elif w in _TROUBLING and words[i - 1 : i] == ["nothing"]:
-                add("safe")  # ("nothing dramatic", "nothing serious"; not "nothing but a scary gap")
             went = w == "smoothly" and i > 0 and _lemmas(words[i - 1]) & {"go", "pass", "run"}  # ("it went smoothly")
             if (w in _SAFE_WORDS or went) and not _denied_before(words, i) and not _sign_off(words, i):
                 # ("fine rain", "on a fine, dry evening": a word of the weather before its noun)

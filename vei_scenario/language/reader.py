@@ -433,7 +433,7 @@ def _normalised(text: str) -> str:
 
 #: Words of standing still after "'m" / "'re", which keep their verb: "we're stopped" is a state, where
 #: "we stopped" would be a stop made.
-_STATES = frozenset(("stopped", "stationary", "stood", "sat", "parked", "halted", "fully", "completely", "already"))
+_STATES = frozenset(("stopped", "stationary", "stood", "parked", "halted", "fully", "completely", "already"))
 
 
 def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
@@ -3452,13 +3452,15 @@ def _the_most_a_scenario_holds(actors: list[_Actor]) -> tuple[list[_Actor], list
 
 
 def _standing_rank(a: _Actor) -> int:
-    """How little ``a`` does: 0 a move of its own, 1 nothing the reader has a behaviour for (what it
-    does is told otherwise: "the moped hit her"), 2 only standing or waiting ("a bus, two taxis ... were
-    all waiting")."""
+    """How little ``a`` does: 0 a manoeuvre ("pulled out in front of me"), 1 only going on, 2 nothing the
+    reader has a behaviour for (what it does is told otherwise: "the moped hit her"), 3 only standing or
+    waiting ("a bus, two taxis ... were all waiting")."""
     names = {b[0] for b in a.behaviours}
+    if names - {"stop", "keep_going", "along_road", "keep_lane"} and not a.parked:
+        return 0  # (a manoeuvre: "a tractor pulled out in front of me")
     if names - {"stop"} and not a.parked:
-        return 0
-    return 2 if names or a.stationary or a.parked else 1
+        return 1
+    return 3 if names or a.stationary or a.parked else 2
 
 
 def _idle(a: _Actor) -> bool:
@@ -4491,6 +4493,7 @@ def _apply(m, who, r, link, added) -> None:
             m.slot == "arm"
             and m.prev not in _LANDMARK_PREPOSITIONS
             and not sides.arm_is_where_it_acts(m.prev, a.said, a.behaviours)
+            and not (a.lane_side and m.prev not in _OUT_OF_AN_ARM)  # ("in the right lane ... at the exit, it swerves")
         ):
             a.arm = True  # (not "on the crossing just after the exit": a landmark, not where it comes from)
             a.from_arm = a.from_arm or m.prev in ("from", "out")  # (not "over the mouth of the side road")

@@ -153,8 +153,9 @@ _TWELVE_HOUR = re.compile(r"(?<![\d:] )(?<!\d)\b([1-6])(?: : |\.)[0-5]\d\b(?! (?
 def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
     """``clock`` read as the afternoon's where it is written as people write a twelve-hour clock ("at
     3:15") and no part of the day said beside it puts it in the small hours or the morning (``parts``:
-    the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15. A later
-    hour is read in the half the part said beside it puts it in ("about 9:15 at night": 21:15)."""
+    the clocks of the parts of the day said): a driver outside a school at 3:15 means 15:15. A clock
+    with its half said right after it is read in that half ("7:15 at night": 19:15, "2:30 at night":
+    02:30, "8:40 in the evening": 20:40)."""
     if clock is not None and 1 <= int(clock[:2]) <= 12:  # ("7:15 at night", "8:40 in the evening")
         hour, minute = int(clock[:2]), clock[3:]
         half = re.search(rf"\b0?{hour} : {minute} (?:in the (?:afternoon|evening)|at night|tonight)\b", said)
@@ -162,11 +163,6 @@ def twelve_hour(clock: str | None, said: str, parts: list[str]) -> str | None:
             return f"{0 if hour == 12 else hour if hour <= 5 else hour + 12:02d}:{minute}"
         if half is not None:
             return f"{hour % 12 + 12:02d}:{minute}"
-    if clock is not None and 7 <= int(clock[:2]) <= 11:  # ("about 9:15 at night": the part says the half)
-        hour, pm = int(clock[:2]), int(clock[:2]) + 12
-        known = [p for p in parts if p in PART_OF_DAY_HOURS]
-        if known and _within(pm, known[0]) and not _within(hour, known[0]):
-            return f"{pm:02d}{clock[2:]}"
     if clock is None or _TWELVE_HOUR.search(said) is None or int(clock[:2]) > 6:
         return clock
     hour, pm = int(clock[:2]), int(clock[:2]) + 12
