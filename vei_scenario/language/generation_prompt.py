@@ -31,13 +31,13 @@ _NEGATIVE = re.compile(
     (?:"(?P<quoted>[^"\n]*)"|(?P<line>[^\n]*))
     """
 )
+#: The most words of an item of a negative prompt's list ("deformed bicycle", "distorted text on bus"); a
+#: sentence after "Negative:" is a critique ("Negative: when the cyclist pulled out you braked late").
+_ITEM_WORDS = 4
 #: A generator's settings: the tail of a line made of double-dashed names, each with one value at most
 #: ("--ar 16:9 --seed 1207 --style raw"), and Midjourney's "--no" with its list ("--no crash, gore").
 #: Only such a tail: a dash in prose ("the van --no lights-- pulled out", "at 30 mph --hit it square on")
 #: closes again or goes on in words.
-#: The most words of an item of a negative prompt's list ("deformed bicycle", "distorted text on bus"); a
-#: sentence after "Negative:" is a critique ("Negative: when the cyclist pulled out you braked late").
-_ITEM_WORDS = 4
 _SETTING_ITEM = r"--(?:no[ \t]+(?:(?!--)[^\n])+?|[a-z][\w-]*(?:[ \t]+(?!--)\S+)?)"
 _SETTINGS = re.compile(
     rf"(?im)(?<=\s)(?:{_SETTING_ITEM}(?:[ \t]+{_SETTING_ITEM})+|--[a-z][\w-]*[ \t]+[\w.:/-]*\d[\w.:/-]*)[ \t]*$"

@@ -640,16 +640,7 @@ def _tags_a_record(words: list[str], i: int) -> bool:
     after = words[i + 1 : i + 4]
     label_at = 1 if after[:1] == ["as"] else 2 if after[:1] and after[0] in _THE_RECORD and after[1:2] == ["as"] else 0
     if label_at:  # ("tag it as a near miss"; not "tagged it as it went by", a clause of time)
-        return after[label_at : label_at + 1] not in (
-            ["it"],
-            ["he"],
-            ["she"],
-            ["they"],
-            ["we"],
-            ["i"],
-            ["you"],
-            ["the"],
-        )
+        return not set(after[label_at : label_at + 1]) & (SUBJECT_PRONOUNS | {"it", "the"})
     opens = i == 0 or words[i - 1] in _BREAK_PUNCT or words[i - 1] in ("so", "then", "just", "please", "and")
     ends = len(words) <= i + 2 or words[i + 2] in _BREAK_PUNCT or words[i + 2] in ("one", "and", "then")
     return opens and words[i] == "tag" and after[:1] != [] and after[0] in _THE_RECORD and ends

@@ -20,6 +20,7 @@ import re
 from collections.abc import Callable
 
 from vei_scenario.language.generation_prompt import without_prompt_syntax
+from vei_scenario.language.settings import TURN_LABEL
 
 #: Between sentences: whitespace after an end mark, or a line break.
 _BREAK = re.compile(r"((?<=[.!?])\s+|\s*\n\s*)")
@@ -177,9 +178,7 @@ def only_the_scene(text: str, names_road_user: Callable[[str], object]) -> tuple
 
 
 #: A speaker's label opening a line, after any stamp ("OFFICER: ", "[00:01:10] Ms Lee: ").
-_TURN_LABEL = re.compile(
-    r"^\s*(?:[\[(]?\d{1,2}:\d\d(?::\d\d)?[\])]?[ \t]+)?[A-Z][\w.'-]*(?:[ \t]+[\w.'()-]+){0,3}:[ \t]"
-)
+_TURN_LABEL = re.compile(rf"^\s*(?:[\[(]?\d{{1,2}}:\d\d(?::\d\d)?[\])]?[ \t]+)?{TURN_LABEL}")
 
 
 def _options_follow(rest: str) -> bool:

@@ -135,7 +135,7 @@ def time_of_day(said: list[tuple[str, str]], clock: str | None) -> str | None:
         return clock
     first, last = PART_OF_DAY_HOURS[parts[0]]
     hour = int(clock.split(":")[0])
-    if (first <= hour <= last) if first <= last else (hour >= first or hour <= last):
+    if _within(hour, parts[0]):
         return clock
     before, after = (first - hour) % 24, (hour - last) % 24
     if before <= CLOCK_SLACK_H:
@@ -372,13 +372,14 @@ def agrees(clock: str | None, part: str | None) -> bool:
         return clock is not None
     first, last = PART_OF_DAY_HOURS[part]
     hour = int(clock.split(":")[0])
-    if (first <= hour <= last) if first <= last else (hour >= first or hour <= last):
-        return True
-    return min((first - hour) % 24, (hour - last) % 24) <= CLOCK_SLACK_H
+    return _within(hour, part) or min((first - hour) % 24, (hour - last) % 24) <= CLOCK_SLACK_H
 
 
+#: A speaker's label: a capitalised word and up to three more, then a colon ("Kerry: ", "Ms Lee: ",
+#: "Amelia (Chair): ").
+TURN_LABEL = r"[A-Z][\w.'-]*(?:[ \t]+[\w.'()-]+){0,3}:[ \t]"
 #: A speaker's label right after a stamp ("00:05:11 Kerry: ..."): the clock stamps a turn.
-_SPEAKER_AFTER = re.compile(r"[ \t]*[A-Z][\w.'-]*(?:[ \t]+[\w.'()-]+){0,3}:[ \t]")
+_SPEAKER_AFTER = re.compile(rf"[ \t]*{TURN_LABEL}")
 
 
 def line_stamps(text: str) -> frozenset[str]:
