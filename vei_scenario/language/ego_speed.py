@@ -129,11 +129,12 @@ _PHRASE_ENDS = frozenset({",", ";", ".", "!", "?", "and", "when", "while", "as",
 _OPENERS = SENTENCE_END | {":"}
 
 
-def opening_participles(tokens: list[str]) -> dict[int, bool]:
+def opening_participles(tokens: list[str], speeds: frozenset[int] | set[int] = frozenset()) -> dict[int, bool]:
     """The numbers said in a phrase that opens its sentence with a participle and no subject, by their
     index: True where the participle is of driving (the speed is the narrator's, the ego's), False
     for one of walking, riding or crossing ("Crossing the road at 6 km/h, a jogger ...": the speed of
-    the one named next)."""
+    the one named next). ``speeds``: the indices the reader read as speeds, bare ones among them ("Doing
+    about 20 down the high street, a lad ...": the narrator's, whatever sentence came before)."""
     out: dict[int, bool] = {}
     for k, w in enumerate(tokens):
         if not w.endswith("ing") or len(w) < 5 or (k and tokens[k - 1] not in _OPENERS):
@@ -144,7 +145,7 @@ def opening_participles(tokens: list[str]) -> dict[int, bool]:
         for j in range(k + 1, min(k + 14, len(tokens))):
             if tokens[j] in _PHRASE_ENDS:
                 break
-            if is_number(tokens[j]) and j + 1 < len(tokens) and tokens[j + 1] in V.SPEED_UNITS:
+            if j in speeds or (is_number(tokens[j]) and j + 1 < len(tokens) and tokens[j + 1] in V.SPEED_UNITS):
                 out[j] = not NOT_DRIVING & set(verbs)
     return out
 

@@ -23,6 +23,7 @@ from vei_scenario.language import spoken_lengths
 from vei_scenario.language.function_words import BE, CLAUSE_BREAKS, DETERMINERS, PHRASE_ENDS
 from vei_scenario.language.imperative import imperative_as_ego
 from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.located_first import said_in_order
 
 _ONES = {
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
@@ -1160,6 +1161,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\s*\n\s*(?:(?:[-*\u2022\u00b7\u2013]|\d{1,2}[.)])\s+)?", ". ", text)
     text = re.sub(r"\s*\|\s*|\s+/\s+", ". ", text)  # fields between bars or spaced slashes: one a sentence
     text = re.sub(r"[ ]*\t\s*", ". ", text.strip("\t"))  # (the cells of a row pasted from a sheet, as bars)
+    text = said_in_order(text, known_noun)  # ("from the left comes a cyclist": "a cyclist comes from the left")
     # an arrow of a note ("no braking -> impact") ends a clause as a comma does: what stands before it
     # does not govern what follows
     text = _VALUE_ARROW.sub(_value_arrow, text)

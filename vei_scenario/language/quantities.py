@@ -1477,7 +1477,9 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                     or _stative_past(ego, m, tokens)
                 )
             ):
-                if (not acted or ego.prev in _BACKGROUND) and not _sets_off_after(tokens, m.end, _others_at(clauses)):
+                if (not acted or ego.prev in _BACKGROUND or _throughout(tokens, m.end)) and not _sets_off_after(
+                    tokens, m.end, _others_at(clauses)
+                ):
                     return True
     return False
 
@@ -1559,6 +1561,30 @@ def _others_at(clauses) -> frozenset[int]:
         if m.slot == "actor" and m.value != "ego"
         for i in range(m.start, m.end)
     )
+
+
+#: Phrases that hold a state through the whole event ("I was stationary the whole time", "we were parked
+#: at the time", "I was stopped throughout").
+_THROUGHOUT = (
+    ("the", "whole", "time"), ("the", "entire", "time"), ("all", "the", "time"), ("at", "the", "time"),
+    ("throughout",), ("all", "along"), ("the", "whole", "while"), ("at", "that", "point"), ("at", "the", "moment"),
+)  # fmt: skip
+
+
+def _throughout(tokens: list[str], end: int) -> bool:
+    """Whether the state that ends at ``end`` is said to hold through the event ("A van came past me. I was
+    stationary the whole time."): told after what others did, it is still how the ego stood while they did
+    it, not a stop it made in reply. One word of place may come between ("stopped there the whole time"),
+    and the state's own "at" may begin the phrase ("stopped at the time")."""
+    if end and tokens[end - 1] == "at":
+        end -= 1
+    for skip in (0, 1):
+        at = tokens[end + skip :]
+        if skip and (not at or at[0] not in ("there", "still", "then")):
+            break
+        if any(tuple(at[: len(p)]) == p for p in _THROUGHOUT):
+            return True
+    return False
 
 
 def _sets_off_after(tokens: list[str], start: int, others: frozenset[int]) -> bool:

@@ -2052,7 +2052,7 @@ def _read(text: str) -> Reading:
     limits = ego_speed.limits(scanned, speeds)  # ("doing 50 in a 60 km/h zone": the road's, no one's speed)
     limits_alone = ego_speed.limits_alone(scanned, speeds, limits)  # ("WE NEED A 20MPH LIMIT. A van ...")
     road_limit: float | None = None  # (the first of those: the ego's pace where nothing else gives one)
-    opened.update(ego_speed.opening_participles(scanned))  # ("Heading home at 50 km/h, ...": speeds of opening phrases)
+    opened.update(ego_speed.opening_participles(scanned, speeds))  # ("Heading home at 50 km/h, ...")
     opened.update(ego_speed.before_what_happened(scanned, speeds, road_users))  # ("On the M6 at 70 when ...")
     named: list[tuple[_Actor | str, str]] = []
     main_subject: _Actor | str | None = None  # the subject said before a "while" clause inside its sentence
