@@ -1146,6 +1146,13 @@ _CAMERA_CAR_FROM_ME = re.compile(
 )
 
 
+#: Amounts of traffic said in other words, as the reader's densities ("traffic was medium": moderate).
+_TRAFFIC_AMOUNTS = {
+    "medium": "moderate", "small": "light", "little": "light", "low": "light", "dense": "heavy", "high": "heavy",
+    "strong": "heavy",
+}  # fmt: skip
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
@@ -1254,6 +1261,12 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\b(?:from )?(?:the )?(left|right) to (?:the )?(?:right|left)\b(?! lane)", r"from the \1", text)
     # "traffic was moderate": moderate traffic (the word is then no criticality of what follows)
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
+    # "the traffic was medium", "traffic small", "traffic dense": the amount in a translation's words
+    text = re.sub(
+        r"\btraffic (?:is |was |were )?(?:very |quite |fairly )?(medium|small|little|low|dense|high|strong)\b",
+        lambda m: f"{_TRAFFIC_AMOUNTS[m[1]]} traffic",
+        text,
+    )
     text = _own_systems_vehicle(text, known_noun)  # ("Car beeps and does that pre-brake jerk": the ego's system)
     text = _the_car_is_the_ego(text)
     text = _role_is_the_ego(text, known_noun)

@@ -614,6 +614,8 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
         if obj[:1] and (obj[0] in _DETERMINERS or obj[0] in _POSSESSIVES) and names_a_thing(obj[1:], named):
             return False  # ("knocked the sirens off", "is this going to hit my rating")
         return _meets_road_user(_object_of(words, i))
+    if lem & _SHOVING and _is_verb(w) and _shoved_into_a_road_user(words, i):
+        return True  # ("a van behind pushed us into the car ahead", "I was pushed onto the van")
     if _is_verb(w) and not lem & {"turn", "look", "get", "change", "switch", "fall", "slow"}:
         j = i + 1
         if w in _DIRECTIONS and i > 0 and _is_verb(words[i - 1]):
@@ -626,6 +628,25 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
             return _into_road_user(words, j)  # (not "starts merging into me": a motion under way)
         if lem & {"throw", "fling", "launch", "toss"} and j < len(words) and words[j] in ("onto", "over"):
             return True  # ("was thrown onto the bonnet": it was hit)
+    return False
+
+
+#: Verbs of moving someone by a blow ("pushed us into the car ahead", "was shoved onto the van"): no contact
+#: verb themselves (people push prams and bikes), one where what is moved meets a road user.
+_SHOVING = frozenset(("push", "shove", "propel", "thrust"))
+
+
+def _shoved_into_a_road_user(words: list[str], i: int) -> bool:
+    """Whether the verb of shoving at ``i`` moves someone into or onto a road user or a part of one ("pushed
+    us into the car ahead", "I was pushed onto the transporter", "shoved my car into the back of the bus"):
+    the one shoved meets it. Not into a place ("pushed her pram into the road"), nor into street furniture
+    ("pushed into the kerb"), nor a pushchair pushed onto the crossing."""
+    for j in range(i + 1, min(i + 5, len(words))):
+        if words[j] in PHRASE_ENDS:
+            return False
+        if words[j] in (_INTO, "onto"):
+            head = next((x for x in words[j + 1 : j + 6] if x not in _DETERMINERS and x not in _POSSESSIVES), "")
+            return head not in _FURNITURE and _into_road_user(words, j)
     return False
 
 
@@ -893,8 +914,8 @@ def _verbal(words: list[str], i: int) -> bool:
         return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
     if nxt == "ego":
         return True  # ("a taxi hit my car", read as "hit ego": the ego's vehicle is the object)
-    if nxt in ("on", "against") and _vehicle_part(words[i + 2 : i + 6]):
-        return True  # ("hit on my front door", "struck against the rear bumper": a blow where it landed)
+    if nxt in ("on", "against", "in", "to", "at") and _vehicle_part(words[i + 2 : i + 6]):
+        return True  # ("hit on my front door", "struck against the rear bumper", "hit in the right side of my car")
     return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with", "by"} | _POSSESSIVES | _PERSON_OBJECTS
 
 

@@ -1,0 +1,56 @@
+"""Contacts and amounts of traffic as machine translations and plain accounts say them: a blow said
+with a preposition before the part it landed on ("hit in the right side of my car", "hit to the rear
+door"), someone shoved into or onto a road user ("pushed us into the car ahead"), and the traffic's
+amount in other words ("the traffic was medium", "traffic small")."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.outcome import stated_intent
+from vei_scenario.language.reader import read
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came out of the side street and the cyclist hit in the left side of my car.",
+        "The minibus pulled away from the stop and its front corner hit to the rear door of my car.",
+        "We were queuing when a lorry behind failed to stop and pushed us into the car ahead.",
+        "The van behind drove up on me, whereby I was pushed onto the taxi in front.",
+        "The coach shunted me and shoved my car into the back of the bus.",
+    ],
+)
+def test_a_contact_said_through_a_preposition_or_a_shove_is_a_collision(text):
+    assert read(text).intent == "collision"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "she pushed her pram into the road .",
+        "a man pushed his bike onto the crossing .",
+        "i was pushed into the kerb by the wind .",
+        "the gust pushed the van into the next lane .",
+        "the ball hit in the garden .",
+        "the rain hit to the windscreen .",
+    ],
+)
+def test_a_shove_into_a_place_or_a_blow_to_nothing_of_a_road_user_is_no_contact(said):
+    assert stated_intent(said) != "collision"
+
+
+@pytest.mark.parametrize(
+    ("text", "density"),
+    [
+        ("A taxi cut in front of me. The traffic was medium.", "moderate"),
+        ("A taxi cut in front of me. Conditions: dusk, road dry, traffic small.", "light"),
+        ("A taxi cut in front of me on the ring road, traffic dense.", "heavy"),
+    ],
+)
+def test_an_amount_of_traffic_in_other_words(text, density):
+    assert read(text).density == density
+
+
+def test_a_traffic_light_is_no_amount():
+    assert read("A taxi cut in front of me. The traffic light was red.").density is None
