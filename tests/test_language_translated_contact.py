@@ -54,3 +54,20 @@ def test_an_amount_of_traffic_in_other_words(text, density):
 
 def test_a_traffic_light_is_no_amount():
     assert read("A taxi cut in front of me. The traffic light was red.").density is None
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "i stop with room to spare . follow for more london cabbie clips .",
+        "subscribe for many more helmet cam clips .",
+        "i stopped in time . those two dashcam clips are on my channel .",
+    ],
+)
+def test_clips_after_a_determiner_only_a_plural_takes_are_videos_not_a_contact(said):
+    assert stated_intent(said) != "collision"
+
+
+@pytest.mark.parametrize("said", ["the cabbie clips my mirror .", "then some idiot clips my mirror ."])
+def test_clips_after_its_subject_is_still_a_contact(said):
+    assert stated_intent(said) == "collision"

@@ -848,6 +848,8 @@ _INTENSIFIERS = frozenset(("very", "so", "too", "just", "only", "really"))
 
 #: Determiners that open a plural noun phrase ("the clips", "these hits").
 _PLURAL_DETERMINERS = frozenset(("the", "these", "those", "some", "many", "several", "more", "fewer", "few"))
+#: Of those, the ones no singular noun follows: with modifiers between, the head is still their plural.
+_ONLY_PLURAL = frozenset(("these", "those", "many", "several", "more", "fewer", "few"))
 
 
 def _plural_noun(words: list[str], i: int) -> bool:
@@ -859,7 +861,16 @@ def _plural_noun(words: list[str], i: int) -> bool:
         return False
     if _number(words[i - 1]) is not None:
         return i < 2 or words[i - 2] not in _SPEED_BEFORE
-    return words[i - 1] in _PLURAL_DETERMINERS
+    if words[i - 1] in _PLURAL_DETERMINERS:
+        return True
+    # ("follow for more London cabbie clips", "these dashcam crashes": a determiner only a plural takes, its
+    # noun's modifiers between, none of them a verb)
+    for k in range(i - 2, max(i - 4, -1), -1):
+        if words[k] in _ONLY_PLURAL:
+            return not any(_is_verb(x) and "NOUN" not in _pos(x) for x in words[k + 1 : i])
+        if words[k] in PHRASE_ENDS:
+            break
+    return False
 
 
 #: Words before a number that make it a speed, not a count ("at 20", "doing 30"; "about 40 crashes" is one).
