@@ -102,3 +102,30 @@ def test_a_state_held_the_whole_time_is_the_ego_at_rest(text):
 )
 def test_a_stop_made_in_reply_is_no_state_held(text):
     assert read(text).ego_speed_mps != 0.0
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Out of the fog came a tractor on my side of the road and I swerved.",
+        "Out of nowhere came a taxi and cut straight in front of me.",
+    ],
+)
+def test_a_road_user_out_of_sight_is_not_turned_into_one_pulling_out_of_a_place(text):
+    from vei_scenario.language.located_first import said_in_order
+    from vei_scenario.language.reader import _actor_noun_in
+
+    assert said_in_order(text.lower(), _actor_noun_in) == text.lower()
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "behaviour"),
+    [
+        ("Behind the lorry was a cyclist who pulled out into my lane without looking.", "bicycle", "cut_in"),
+        ("In front of me was a van which stopped suddenly, and I went into the back of it.", "van", "sudden_stop"),
+    ],
+)
+def test_a_relative_clause_after_the_road_user_stays_its_own(text, kind, behaviour):
+    reading = read(text)
+    assert [b[0] for b in _actor(reading, kind).behaviours] == [behaviour]
+    assert all(a.kind == kind for a in reading.actors)

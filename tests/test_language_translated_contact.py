@@ -71,3 +71,28 @@ def test_clips_after_a_determiner_only_a_plural_takes_are_videos_not_a_contact(s
 @pytest.mark.parametrize("said", ["the cabbie clips my mirror .", "then some idiot clips my mirror ."])
 def test_clips_after_its_subject_is_still_a_contact(said):
     assert stated_intent(said) == "collision"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "the low sun hit in my windscreen and i lost sight of him .",
+        "the headlights of the coach hit in my mirror .",
+        "a man pushed his way onto the bus .",
+        "the commuters pushed onto the tram at the stop .",
+        "a boy pushed his scooter onto the tram tracks .",
+    ],
+)
+def test_light_that_hits_and_people_who_board_are_no_contact(said):
+    assert stated_intent(said) != "collision"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Traffic was high speed on the ring road and a car cut in front of me.",
+        "The traffic small roundabout was empty when a cyclist came round.",
+    ],
+)
+def test_a_traffic_word_that_is_no_amount(text):
+    assert read(text).density in (None, "none")

@@ -45,6 +45,11 @@ _PREPOSITIONS = frozenset(
     "from behind before front of ahead out next to beside alongside towards toward opposite on in at along across "
     "around round into down up through over off with".split()
 )
+#: Where a road user comes out of sight from, not a place on the road ("out of nowhere came a van", "out of
+#: the fog came a lorry"): said in the usual order the reader would take it for a side road it pulls out of.
+_OUT_OF_SIGHT = re.compile(
+    r"\bout of (?:nowhere|the (?:mist|fog|dark|darkness|gloom|murk|haze|smoke|spray|rain|night|shadows|blue|sun))\b"
+)
 #: A time said first, not a place: it stays first ("at that moment a cyclist came from behind").
 _TIME = re.compile(
     r"(?:at|in)\s+(?:that|this|the\s+same|the|the\s+very|that\s+very)\s+(?:moment|time|point|instant|second)"
@@ -78,7 +83,7 @@ def said_in_order(text: str, known_noun: Callable[[str], str | None]) -> str:
 
 def _turned(m: re.Match, known_noun: Callable[[str], str | None]) -> str:
     place, verb = m["place"], m["verb"]
-    if not _a_place(place):
+    if not _a_place(place) or _OUT_OF_SIGHT.search(place):
         return m[0]
     said_from = _POINT_OF_VIEW.search(re.sub(r"^(?:suddenly|then)\s+", "", place))
     if re.fullmatch(_TRANSITIVE, verb.split()[0]) and not said_from:
@@ -87,7 +92,15 @@ def _turned(m: re.Match, known_noun: Callable[[str], str | None]) -> str:
     if who is None:
         return m[0]
     rest = m["who"][len(who) :]
+    relative = re.match(r"\s*,?\s*(?:who|which|that)\s+(?!(?:i|we|he|she|they|you|it)\b)", rest)
+    if relative is None and re.match(r"\s*,?\s*(?:who|which|that)\b", m.string[m.end() :]) and not rest.strip():
+        return m[0]  # (a clause about the road user beyond what was matched: left as said)
     adverbs = re.match(r"(?:(?:suddenly|then)\s+)*", place)[0]
+    if relative is not None:  # ("behind the bus was a cyclist who pulled out": "a cyclist behind the bus pulled out")
+        what = rest[relative.end() :]
+        if re.fullmatch(r"is|was|are|were", verb):
+            return f"{m['start']}{adverbs}{who} {place[len(adverbs) :]} {what}"
+        return f"{m['start']}{adverbs}{who} {verb} {place[len(adverbs) :]} and {what}"
     if _TIME.fullmatch(place[len(adverbs) :]):
         return f"{m['start']}{place} {who} {verb}{rest}"  # ("at that moment a cyclist came from behind")
     place = re.sub(r"^before (?=me\b|us\b|him\b|her\b|them\b|the ego\b)", "ahead of ", place[len(adverbs) :])

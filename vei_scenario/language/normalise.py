@@ -1263,7 +1263,8 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     text = re.sub(r"\btraffic (?:is|was|were) (?:very |quite |fairly )?(light|moderate|heavy)\b", r"\1 traffic", text)
     # "the traffic was medium", "traffic small", "traffic dense": the amount in a translation's words
     text = re.sub(
-        r"\btraffic (?:is |was |were )?(?:very |quite |fairly )?(medium|small|little|low|dense|high|strong)\b",
+        r"\btraffic (?:is |was |were )?(?:very |quite |fairly )?(medium|small|little|low|dense|high|strong)"
+        r"(?=\s*(?:[.,;:!?)]|$|\s(?:and|but|so|then|too|as|with|for|on|in|at|today|tonight|this|that)\b))",
         lambda m: f"{_TRAFFIC_AMOUNTS[m[1]]} traffic",
         text,
     )

@@ -631,22 +631,42 @@ def _is_contact(words: list[str], i: int, named: frozenset[str] = frozenset()) -
     return False
 
 
+#: Light and what shines it: what it "hits" ("low sun hit in the windscreen", "headlights hit in my mirror") it
+#: dazzles, no one met.
+_LIGHT = frozenset(
+    ("sun", "sunlight", "sunshine", "light", "lights", "headlight", "headlights", "glare", "beam", "beams",
+     "reflection", "rays", "dazzle", "lamps", "lamp")
+)  # fmt: skip
 #: Verbs of moving someone by a blow ("pushed us into the car ahead", "was shoved onto the van"): no contact
 #: verb themselves (people push prams and bikes), one where what is moved meets a road user.
 _SHOVING = frozenset(("push", "shove", "propel", "thrust"))
+#: Vehicles said as the one shoved ("shoved my car into the back of the bus"); not what people push by hand.
+_SHOVED_VEHICLES = frozenset(("car", "van", "vehicle", "lorry", "truck", "bus", "taxi", "cab", "ego", "motor"))
 
 
 def _shoved_into_a_road_user(words: list[str], i: int) -> bool:
     """Whether the verb of shoving at ``i`` moves someone into or onto a road user or a part of one ("pushed
     us into the car ahead", "I was pushed onto the transporter", "shoved my car into the back of the bus"):
-    the one shoved meets it. Not into a place ("pushed her pram into the road"), nor into street furniture
-    ("pushed into the kerb"), nor a pushchair pushed onto the crossing."""
+    the one shoved meets it. The one shoved is the subject of a passive ("was pushed onto"), or a person or
+    a vehicle as the object ("pushed us", "shoved my car"), not what people push ("pushed her pram", "his
+    bike") nor their own way ("pushed her way onto the bus"); with neither ("passengers pushed onto the
+    tram") people board. Not into a place ("into the road"), street furniture ("into the kerb"), nor a
+    place named after a vehicle ("onto the tram tracks")."""
+    passive = i > 0 and words[i - 1] in ("was", "were", "got", "been", "be", "get", "gets", "being")
     for j in range(i + 1, min(i + 5, len(words))):
         if words[j] in PHRASE_ENDS:
             return False
         if words[j] in (_INTO, "onto"):
-            head = next((x for x in words[j + 1 : j + 6] if x not in _DETERMINERS and x not in _POSSESSIVES), "")
-            return head not in _FURNITURE and _into_road_user(words, j)
+            shoved = words[i + 1 : j]
+            person = len(shoved) == 1 and shoved[0] in _PERSON_OBJECTS
+            ridden = shoved and (shoved[-1] in _PUSHED or shoved[-1] in ("bike", "bicycle", "scooter", "e-scooter"))
+            rider = shoved and _road_user_word(shoved[-1]) and not ridden  # ("pushed the cyclist into the car")
+            if not (passive or person or rider or (shoved and shoved[-1] in _SHOVED_VEHICLES)):
+                return False
+            obj = [x for x in words[j + 1 : j + 6] if x not in _DETERMINERS and x not in _POSSESSIVES]
+            head = obj[0] if obj else ""
+            named_after = len(obj) > 1 and _road_user_word(head) and "NOUN" in _pos(obj[1]) and obj[1] != "ahead"
+            return head not in _FURNITURE and not named_after and _into_road_user(words, j)
     return False
 
 
@@ -925,8 +945,10 @@ def _verbal(words: list[str], i: int) -> bool:
         return True  # ("scooter hit rear wheel", "van hit cyclist": a report's object without its article)
     if nxt == "ego":
         return True  # ("a taxi hit my car", read as "hit ego": the ego's vehicle is the object)
-    if nxt in ("on", "against", "in", "to", "at") and _vehicle_part(words[i + 2 : i + 6]):
-        return True  # ("hit on my front door", "struck against the rear bumper", "hit in the right side of my car")
+    if nxt in ("on", "against") and _vehicle_part(words[i + 2 : i + 6]):
+        return True  # ("hit on my front door", "struck against the rear bumper": a blow where it landed)
+    if nxt in ("in", "to", "at") and _vehicle_part(words[i + 2 : i + 6]) and not _LIGHT & set(words[max(0, i - 5) : i]):
+        return True  # ("hit in the right side of my car", "hit at my front bumper"; not light that "hit in my mirror")
     return prev in _VERBAL_BEFORE or nxt in {"the", "a", "an", "into", "with", "by"} | _POSSESSIVES | _PERSON_OBJECTS
 
 
