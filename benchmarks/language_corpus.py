@@ -109,6 +109,8 @@ FIRST = {
     "language_independent_z56.json": ((50, 50, 11, 46), "measured when written"),
     "language_independent_z57.json": ((50, 50, 14, 46), "measured when written"),
     "language_independent_z58.json": ((50, 50, 11, 46), "measured when written"),
+    "language_independent_z59.json": ((50, 50, 12, 48), "measured when written"),
+    "language_independent_z60.json": ((50, 50, 13, 48), "measured when written"),
 }
 
 

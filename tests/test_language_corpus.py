@@ -125,6 +125,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z56.json": (50, 14),
     ROOT / "tests" / "data" / "language_independent_z57.json": (50, 16),
     ROOT / "tests" / "data" / "language_independent_z58.json": (50, 18),
+    ROOT / "tests" / "data" / "language_independent_z59.json": (50, 13),
+    ROOT / "tests" / "data" / "language_independent_z60.json": (50, 13),
 }
 
 
