@@ -8,7 +8,10 @@ same time comes a vehicle of the oncoming traffic"). The reader takes a clause's
 its verb; with the road user after the verb, a pronoun that follows ("... and at the crossing it turns
 left") and a speed said with it ("with 20 km/h") go to whoever was the subject before. Said again in
 the usual order ("an e-scooter comes from the opposite direction ...") the clause means the same and
-reads as any other. A time said first ("at that moment came a cyclist") stays first.
+reads as any other. A time said first ("at that moment came a cyclist") stays first; a relative clause
+stays with its road user ("behind the bus was a cyclist who pulled out" → "a cyclist behind the bus
+pulled out"); and a road user out of sight ("out of the fog came a lorry") is left as said, since in the
+usual order it would read as pulling out of a side road.
 
 Only an intransitive verb of coming, going or standing is turned round, so a clause that drops its
 subject ("At the lights passed a cyclist", "On the way home followed a van": the narrator passed,
