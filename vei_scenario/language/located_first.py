@@ -25,6 +25,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from vei_scenario.language.function_words import SUBJECT_PRONOUNS
+
 #: Verbs of coming, appearing and standing: no object follows them, so a road user after one is its subject.
 _INTRANSITIVE = (
     "come|comes|came|appear|appears|appeared|emerge|emerges|emerged|stand|stands|stood|wait|waits|waited|"
@@ -59,20 +61,24 @@ _TIME = re.compile(
 )
 #: Who rides or drives the vehicle named before ("an e-scooter rider").
 _RIDERS = frozenset({"rider", "riders", "driver", "drivers", "user", "users"})
+#: Subjects of a clause of their own: "it" said after a relative pronoun makes it an object's ("which it hid").
+_CLAUSE_SUBJECTS = SUBJECT_PRONOUNS | {"it"}
 #: Words that give the place a subject or a verb of its own: then it is no place said first.
-_SUBJECTS = frozenset({"i", "we", "he", "she", "they", "it", "you", "there"})
+_SUBJECTS = _CLAUSE_SUBJECTS | {"there"}
+#: A relative pronoun that opens a clause whose subject is the road user ("a cyclist who pulled out"), not
+#: one with a subject of its own ("an e-scooter, which I did not see").
+_RELATIVE = re.compile(rf"\s*,?\s*(?:who|which|that)\s+(?!(?:{'|'.join(sorted(_CLAUSE_SUBJECTS))})\b)")
 
+#: The verb (with its particle) and the word that opens the road user after it.
+_VERB = rf"(?:{_INTRANSITIVE}|{_TRANSITIVE})(?:\s+(?:out|up|in|past|along))?"
+_WHO_OPENS = r"(?:a|an|the|one|another|two|three|\d+)"
 _CLAUSE = re.compile(
     rf"(?P<start>^|[.!?;:]\s+|,\s+(?:and\s+|then\s+|but\s+)?|\band\s+(?:then\s+)?)"
     rf"(?P<place>(?:suddenly\s+|then\s+)?(?:{_OPENERS})(?:\s+[\w'-]+){{1,7}}?)\s*,?\s+"
-    rf"(?P<verb>(?:{_INTRANSITIVE}|{_TRANSITIVE})(?:\s+(?:out|up|in|past|along))?)\s+"
-    rf"(?P<who>(?:a|an|the|one|another|two|three|\d+)\s+[^\s,.;:!?]+(?:\s+[^\s,.;:!?]+){{0,4}})"
+    rf"(?P<verb>{_VERB})\s+"
+    rf"(?P<who>{_WHO_OPENS}\s+[^\s,.;:!?]+(?:\s+[^\s,.;:!?]+){{0,4}})"
 )
-
-
-_QUICK = re.compile(
-    rf"\b(?:{_INTRANSITIVE}|{_TRANSITIVE})(?:\s+(?:out|up|in|past|along))?\s+(?:a|an|the|one|another|two|three|\d+)\s"
-)
+_QUICK = re.compile(rf"\b{_VERB}\s+{_WHO_OPENS}\s")
 
 
 def said_in_order(text: str, known_noun: Callable[[str], str | None]) -> str:
@@ -88,26 +94,27 @@ def _turned(m: re.Match, known_noun: Callable[[str], str | None]) -> str:
     place, verb = m["place"], m["verb"]
     if not _a_place(place) or _OUT_OF_SIGHT.search(place):
         return m[0]
-    said_from = _POINT_OF_VIEW.search(re.sub(r"^(?:suddenly|then)\s+", "", place))
-    if re.fullmatch(_TRANSITIVE, verb.split()[0]) and not said_from:
+    adverb = re.match(r"(?:suddenly|then)\s+", place)  # (at most one: the clause's pattern allows one)
+    adverbs = adverb[0] if adverb else ""
+    bare = place[len(adverbs) :]
+    if re.fullmatch(_TRANSITIVE, verb.split()[0]) and not _POINT_OF_VIEW.search(bare):
         return m[0]
     who = _road_user(m["who"], known_noun)
     if who is None:
         return m[0]
     rest = m["who"][len(who) :]
-    relative = re.match(r"\s*,?\s*(?:who|which|that)\s+(?!(?:i|we|he|she|they|you|it)\b)", rest)
+    relative = _RELATIVE.match(rest)
     if relative is None and re.match(r"\s*,?\s*(?:who|which|that)\b", m.string[m.end() :]) and not rest.strip():
         return m[0]  # (a clause about the road user beyond what was matched: left as said)
-    adverbs = re.match(r"(?:(?:suddenly|then)\s+)*", place)[0]
     if relative is not None:  # ("behind the bus was a cyclist who pulled out": "a cyclist behind the bus pulled out")
         what = rest[relative.end() :]
         if re.fullmatch(r"is|was|are|were", verb):
-            return f"{m['start']}{adverbs}{who} {place[len(adverbs) :]} {what}"
-        return f"{m['start']}{adverbs}{who} {verb} {place[len(adverbs) :]} and {what}"
-    if _TIME.fullmatch(place[len(adverbs) :]):
+            return f"{m['start']}{adverbs}{who} {bare} {what}"
+        return f"{m['start']}{adverbs}{who} {verb} {bare} and {what}"
+    if _TIME.fullmatch(bare):
         return f"{m['start']}{place} {who} {verb}{rest}"  # ("at that moment a cyclist came from behind")
-    place = re.sub(r"^before (?=me\b|us\b|him\b|her\b|them\b|the ego\b)", "ahead of ", place[len(adverbs) :])
-    return f"{m['start']}{adverbs}{who} {verb} {place}{rest}"  # ("before me rode a cyclist": ahead of me)
+    bare = re.sub(r"^before (?=me\b|us\b|him\b|her\b|them\b|the ego\b)", "ahead of ", bare)
+    return f"{m['start']}{adverbs}{who} {verb} {bare}{rest}"  # ("before me rode a cyclist": ahead of me)
 
 
 def _a_place(place: str) -> bool:
