@@ -87,6 +87,8 @@ def test_a_narrators_opening_participle_with_a_bare_speed_after_another_sentence
         "A taxi came past me on the outside and cut across. I was stationary the whole time.",
         "A cyclist squeezed past on my left, far too close. I was stopped at the time.",
         "A van reversed into my front bumper. We were parked there the whole time.",
+        "A courier on a bike caught my wing mirror as he went by. I was stopped at the time.",
+        "The e-scooter rider struck the side of my car. We were stationary at that point.",
     ],
 )
 def test_a_state_held_the_whole_time_is_the_ego_at_rest(text):
@@ -98,6 +100,7 @@ def test_a_state_held_the_whole_time_is_the_ego_at_rest(text):
     [
         "A cyclist swerved out in front of me and I was stopped just in time.",  # (a stop in reply)
         "A van pulled out on me. I stopped and waited for him to clear.",
+        "A cyclist caught my wing mirror as he went by. I stopped a bit further on to check it.",
     ],
 )
 def test_a_stop_made_in_reply_is_no_state_held(text):

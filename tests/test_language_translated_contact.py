@@ -96,3 +96,15 @@ def test_light_that_hits_and_people_who_board_are_no_contact(said):
 )
 def test_a_traffic_word_that_is_no_amount(text):
     assert read(text).density in (None, "none")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist came out from the right in front of me and I hit to the brakes.",
+        "The e-scooter turned into my lane, I hit in the brake pedal and we stopped one metre before him.",
+        "A pedestrian ran out between the parked cars and I hit at the brakes with all force.",
+    ],
+)
+def test_the_brakes_hit_with_a_preposition_are_no_contact_but_a_hard_stop(text):
+    assert read(text).intent == "near_miss"

@@ -215,13 +215,16 @@ def _struck_earlier(tokens: list[str], m) -> bool:
     no road user ("hit the brakes", "tapped the horn") ended nothing. A stop said as what came first
     is the contact's cause, not its aftermath: in a clause of time or cause after the contact ("hit
     the taxi when it stopped"), in the past perfect ("it had stopped"), or in a hard manner ("he
-    stopped sharp in front of me")."""
+    stopped sharp in front of me"), or a state said to hold the whole time ("I was stopped at the time")."""
     from vei_scenario.language.outcome import contacts_made
+    from vei_scenario.language.quantities import held_throughout
 
     i = m.start
     before = [j for j in contacts_made(tokens) if j < i]
     if not before or said_hard(tokens, m) or tokens[i - 1 : i] == ["had"]:
         return False
+    if held_throughout(tokens, m.end):
+        return False  # ("clipped my mirror. I was stopped at the time": the state it stood in, not what followed)
     between = tokens[before[-1] + 1 : i]
     ends = [k for k, t in enumerate(between) if t in (".", "!", "?", ";")]
     return not _CIRCUMSTANCE & set(between[ends[-1] + 1 if ends else 0 :])

@@ -96,6 +96,8 @@ _NOT_ROAD_USERS = frozenset(
     ("brake", "brakes", "gas", "accelerator", "pedal", "throttle", "horn", "pothole", "puddle", "button", "road",
      "jackpot", "traffic", "red", "green", "lights", "light", "speed", "mph", "km/h", "m/s", "limit", "eye", "base")
 )  # fmt: skip
+#: The controls a driver presses, met by no contact verb ("hit the brakes", "hit to the brakes").
+_CONTROLS_PRESSED = frozenset(("brake", "brakes", "gas", "accelerator", "pedal", "throttle", "horn"))
 #: The closed class of object pronouns and reciprocal phrases: who is met or missed.
 _PERSON_OBJECTS = frozenset(("me", "us", "him", "her", "it", "them", "you", "each", "one"))
 _POSSESSIVES = frozenset(("my", "our", "his", "her", "its", "their", "your"))
@@ -432,6 +434,8 @@ def _meets_road_user(after: list[str]) -> bool:
             return True
         if w in _NOT_ROAD_USERS or _number(w) is not None:
             return False
+        if w in ("in", "to", "at") and _CONTROLS_PRESSED & set(after[k + 1 : k + 4]):
+            return False  # ("hit to the brakes", "hit in the brake pedal": said with a preposition, as in translation)
         if w in ("the", "a", "an", "on", "off", "down", "over", "into", "with") or w in _POSSESSIVES:
             continue
         return True
@@ -1984,12 +1988,18 @@ def _off_the_road(words: list[str], i: int) -> bool:
 _WORKING = frozenset(("hit", "apply", "use", "press", "push", "put", "step", "get", "tap", "dab", "feather", "pump"))
 
 
+#: Prepositions between a verb and the brake it works ("got on the brake"; "hit to the brakes", "hit
+#: in the brake" as translations put it).
+_ONTO_BRAKE = frozenset(("on", "onto", "to", "in", "at"))
+
+
 def _brakes_worked(words: list[str], i: int) -> bool:
-    """Whether the verb at ``i`` takes the brake as its object, up to a determiner and "on" between
-    ("hit the brakes", "got on the brake", "used his brake"): a brake said with its noun. Not the
+    """Whether the verb at ``i`` takes the brake as its object, up to a determiner and a preposition
+    between ("hit the brakes", "got on the brake", "hit to the brakes", "used his brake"): a brake said
+    with its noun. Not the
     brake as what something else does ("pushed the car with the brakes off")."""
     k = i + 1
-    while k < len(words) and k <= i + 3 and (words[k] in _DETERMINERS | _POSSESSIVES or words[k] in ("on", "onto")):
+    while k < len(words) and k <= i + 3 and (words[k] in _DETERMINERS | _POSSESSIVES or words[k] in _ONTO_BRAKE):
         k += 1
     return k < len(words) and words[k] in ("brake", "brakes", "anchors")
 

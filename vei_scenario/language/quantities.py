@@ -1477,7 +1477,7 @@ def ego_at_rest(clauses, tokens: list[str]) -> bool:
                     or _stative_past(ego, m, tokens)
                 )
             ):
-                if (not acted or ego.prev in _BACKGROUND or _throughout(tokens, m.end)) and not _sets_off_after(
+                if (not acted or ego.prev in _BACKGROUND or held_throughout(tokens, m.end)) and not _sets_off_after(
                     tokens, m.end, _others_at(clauses)
                 ):
                     return True
@@ -1571,7 +1571,7 @@ _THROUGHOUT = (
 )  # fmt: skip
 
 
-def _throughout(tokens: list[str], end: int) -> bool:
+def held_throughout(tokens: list[str], end: int) -> bool:
     """Whether the state that ends at ``end`` is said to hold through the event ("A van came past me. I was
     stationary the whole time."): told after what others did, it is still how the ego stood while they did
     it, not a stop it made in reply. One word of place may come between ("stopped there the whole time"),
