@@ -849,6 +849,30 @@ def _ages(text: str, known_noun) -> str:
     return _AGE.sub(sub, text)
 
 
+#: A person's age said after them: "aged about 8", "age 12", "aged 14-15", "a boy of about 8", "a lad of
+#: 15 or 16" (a number with no unit after it). Said so, it describes the person; left in, "about 8"
+#: would be read as a speed.
+_AGE_NUMBER = rf"(?:\d{{1,3}}|{_NUMBER_WORD})"
+_AGE_HEDGE = r"(?:(?:about|around|approx\.?|approximately|roughly|maybe|perhaps|under|over|between|only)\s+)?"
+_AGED = re.compile(
+    rf"\b(?:aged|age)\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or|and)\s*{_AGE_NUMBER})?\b"
+    r"(?!\s*(?:mph|km|kph|kmh|m/s|m\b|metres|meters|feet|ft|yards|%))"
+)
+#: The people an age follows with "of" ("a boy of 8"), a closed class.
+_PEOPLE = ("boy", "girl", "lad", "lass", "kid", "child", "youth", "teenager", "teen", "man", "woman", "lady",
+           "bloke", "guy", "chap", "fella", "gentleman", "person", "son", "daughter", "pedestrian")  # fmt: skip
+_OF_AGE = re.compile(
+    rf"\b({'|'.join(_PEOPLE)})s?\s+of\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or)\s*{_AGE_NUMBER})?\b"
+    r"(?!\s*(?:mph|km|kph|kmh|m/s|m\b|metres|meters|feet|ft|yards|%))"
+)
+
+
+def _ages_after(text: str) -> str:
+    """``text`` without a person's age said after them ("a boy aged about 8", "a lad of 15"): it says
+    who they are, not how fast anyone goes."""
+    return _OF_AGE.sub(lambda m: m.group(1), _AGED.sub("", text))
+
+
 #: A name joined by underscores with a number in it ("scooter_follow_pass_03", "fcw_stopngo_12", "car_1"):
 #: the identifier a test spec or a log gives a scenario or a road user.
 _IDENTIFIER = re.compile(r"\b(?=[a-z0-9_-]*\d)(?=[0-9_-]*[a-z])[a-z0-9-]+(?:_[a-z0-9-]+)+\b")
@@ -1227,7 +1251,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     )  # fmt: skip
     for pattern, repl in _UNITS:
         text = pattern.sub(repl, text)
-    text = _ages(text, known_noun)  # (before numbers in words become digits)
+    text = _ages_after(_ages(text, known_noun))  # (before numbers in words become digits)
     text = _numbers_in_words(text)
     for pattern, repl in _UNITS:  # ("10 meter per second" once its number is digits)
         text = pattern.sub(repl, text)
