@@ -1062,6 +1062,13 @@ _VEHICLE_PARTS = _STRUCK_PARTS | _PARTS | frozenset(
     ("wheel", "pedal", "handlebar", "handlebars", "arch", "panel", "quarter", "corner", "headlight", "taillight",
      "indicator", "tailgate", "sill", "fender", "basket")
 )  # fmt: skip
+
+
+def vehicle_part_word(word: str) -> bool:
+    """Whether ``word`` names a part of a vehicle ("door", "mirror", "bumper")."""
+    return word in _VEHICLE_PARTS
+
+
 #: Verbs of a motion only begun ("started drifting into me"): what it would have met, it did not yet.
 _BEGIN = frozenset(("start", "begin", "try", "attempt"))
 

@@ -83,6 +83,7 @@ from vei_scenario.language import (
     way_across,
     while_clause,
     whose_act,
+    witness_on_foot,
     writer_on_foot,
 )
 from vei_scenario.language import lexicon as L
@@ -911,6 +912,12 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     """(clauses as (link, mentions), ignored words, words read as others, the tokens the mentions
     index) of ``text``; a word that is only a verb and unknown stays in its clause as an
     ``unknown_verb`` mention."""
+    return _scan(text)[:4]
+
+
+def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, list[str], bool]:
+    """:func:`scan`, and whether the writer only watched from beside the road and was left out of the
+    tokens (:mod:`vei_scenario.language.witness_on_foot`)."""
     tokens = _tokens(text, brackets=True)
     metric = Q.metric_country(tokens)  # ("in the ute": the ego's own, which framing names "the ego")
     clauses: list[tuple[str, list[_Mention]]] = [("sequence", [])]
@@ -927,6 +934,8 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
     tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
     tokens = model_said_again(tokens, _kind_at, _known)  # ("a Honda Civic ... the Civic": the Honda)
     tokens = protagonist.without_witness(tokens, framed)  # ("I saw a lad run the red": a witness)
+    bystander = witness_on_foot.bystander(tokens, _kind_at, _known)  # ("I was at the bus stop ...": only saw it)
+    tokens = witness_on_foot.without_writer(tokens, framed) if bystander else tokens
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = owned_by_name.frame(tokens, _kind_at, _known, framed)  # ("Lena's Mini", "the survey team's van")
     tokens = narrator_vehicle.frame(tokens, _kind_at, _known, framed)  # (the writer in it or testing it)
@@ -1352,7 +1361,13 @@ def scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list, 
             clauses[-1][1].append(_Mention("toward", side, side, toward_at, tokens[toward_at - 1], end=toward_at + 1))
             used = max(used, toward_at + 1 - i)
         i += used
-    return [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])], ignored, read_as, tokens
+    return (
+        [c for c in clauses if any(m.slot not in ("punct", "link") for m in c[1])],
+        ignored,
+        read_as,
+        tokens,
+        bystander,
+    )
 
 
 def _specific_act(tokens: list[str], i: int) -> int:
@@ -1995,7 +2010,7 @@ def _read(text: str) -> Reading:
     """One reading of ``text`` as it is written (see :func:`read`)."""
     text = quoted_speakers(text)  # ("'I stopped in time,' she said": she stopped, no narrator of its own)
     text, aside = only_the_scene(text, lambda part: _actor_noun_in(part.lower()))  # (what is not the scene)
-    clauses, ignored, read_as, scanned = scan(text)
+    clauses, ignored, read_as, scanned, bystander = _scan(text)
     ignored[:0] = [w for w in aside if w not in FUNCTION_WORDS]
     clauses = off_a_place.onto_the_road_off_a_place(clauses, scanned, FUNCTION_WORDS)  # ("shot off the promenade")
     set_by_the_ego = ego_speed.right_after_the_ego(clauses)  # ("lets the ego (50 km/h) pass"), as scanned
@@ -3180,7 +3195,7 @@ def _read(text: str) -> Reading:
     actors = heading.fold_told_again(actors, r, heading.heading_end(text, scanned, _tokens))  # (a title line)
     afoot = False  # (the writer on foot in the scene, in no vehicle of their own)
     if not ego_named:
-        outside = narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son was hit by ...")
+        outside = bystander or narrator_outside.outside(scanned, _kind_at, _known)  # ("we watched ...", "my son ...")
         writer_only = outside and not ego_double.addressed(text)  # (their "I" names no ego; "you" still does)
         unnamed = ego_double.ego_unnamed(scanned, clauses, writer_only)  # (no narrator at a wheel, no phrase)
         actors = ego_double.merge_into_ego(actors, r, unnamed, scanned)  # ("Bus was doing 45")

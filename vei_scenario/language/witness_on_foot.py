@@ -1,0 +1,156 @@
+"""A writer on foot beside the road who tells what a vehicle and someone else did: a witness.
+
+"I was stood on the pavement when the lights changed. The tipper pulled away and a scooter came
+across from the right against the red", "I was walking my dog on the pavement. The blue Corsa came
+past me and turned left, and a woman on a scooter rode into the side of it": a statement for the
+police or an insurer, or a reply to a witness appeal. The writer is in the story only as the one who
+saw it; the scenario is the vehicle's, as in a report with no narrator, and read with the writer's
+"I" it would be the writer's own (their standing still the ego's, the vehicle one more road user).
+
+It is told apart by the writer's part in the words, and by the story having a scene of its own:
+
+- the writer stands, walks or waits on foot (the subject of a verb of being on foot,
+  :func:`vei_scenario.language.narrator_outside.on_foot_verb`, or "was on the pavement", "in the bus
+  shelter"; not "at the bus stop", where a bus driver stands too) and is in no vehicle of their own,
+  at no wheel and with no speed (:func:`vei_scenario.language.narrator_outside.outside`; no verb of
+  riding or driving, no number in their clause), and nothing is placed from them ("in front of
+  me", "came past us": the one the scene is placed from is in it);
+- the writer does not go into the road: not the subject of a verb of crossing or of stepping
+  off or out ("I stepped off the kerb", "I was crossing the road": the walker a vehicle meets,
+  :mod:`vei_scenario.language.writer_on_foot`), and nothing hits, misses or stops for them;
+- the story names at least two road users or people besides the writer, so that the vehicle has
+  someone to meet: with one, the writer is the one it meets.
+
+The writer's words are then left out, so the passes for a report with no narrator
+(:func:`vei_scenario.language.protagonist.frame`) find the vehicle the story is about: their "I",
+with what they were doing ("I was stood", "I was walking my dog"), but not where ("on the pavement
+by the junction with Viaduct Road" still says a junction) nor what they saw or would say ("saw a
+Corsa coming at about 30").
+"""
+
+from __future__ import annotations
+
+from vei_scenario.language.discourse import PERCEIVE
+from vei_scenario.language.ego import KindAt, Known, lemma_in, road_users
+from vei_scenario.language.function_words import FIRST_PERSON
+from vei_scenario.language.narrator_outside import FOOT_PLACES, on_foot_verb, outside
+from vei_scenario.language.outcome import vehicle_part_word
+from vei_scenario.language.vocabulary import GENDERED
+
+#: Verbs (by lemma) of going into the road on foot: a writer who does is in the scene.
+_INTO_THE_ROAD = frozenset({"cross", "step", "run", "dash", "dart", "jump"})
+#: Verbs (by lemma) of going on wheels: a writer who does rides or drives in the scene.
+_ON_WHEELS = frozenset({"ride", "cycle", "drive", "scoot", "pedal", "travel"})
+#: Verbs (by lemma) a vehicle does to a person it meets: a writer as their object is in the scene.
+_DONE_TO = frozenset({"hit", "miss", "strike", "clip", "knock", "stop", "brake", "swerve", "hoot", "beep", "wave"})
+#: Verbs (by lemma) of saying or thinking: the writer's hedge ("I would say", "I think") is no act.
+_SAYING = frozenset({"say", "think", "reckon", "believe", "guess", "suppose", "estimate", "know", "remember"})
+#: The writer as a subject, and as an object.
+_SUBJECTS = frozenset({"i", "we"})
+_OBJECTS = frozenset({"me", "us"})
+#: Words that place something from the writer ("ahead of me", "past us", "towards me").
+_RELATIVE_TO = frozenset({"front", "ahead", "behind", "past", "towards", "toward", "at", "into", "beside", "by"})
+#: Person nouns ("a lad", "a woman"), who are walkers when they act.
+_PERSONS = frozenset().union(*GENDERED.values())
+#: Words that end a writer's clause.
+_CLAUSE_END = frozenset({".", ",", ";", ":", "!", "?", "and", "but", "when", "while", "as", "then"})
+#: Prepositions that open where the writer was ("on the pavement", "by the zebra"): kept, as the place.
+_WHERE = frozenset(
+    {"at", "on", "by", "in", "near", "outside", "beside", "opposite", "next", "across", "from", "up", "behind"}
+)
+#: Words between a preposition and its place ("at the", "on my").
+_ARTICLES = frozenset({"the", "a", "an", "my", "our", "this", "that"})
+#: Places for people waiting on foot beside those of :data:`FOOT_PLACES` ("the bus shelter").
+_WAITING_PLACES = frozenset({"shelter"})
+
+
+def _writer_clauses(tokens: list[str]) -> list[list[str]]:
+    """The words of each clause the writer is the subject of, from their "I"/"we" to its end."""
+    out = []
+    for k, w in enumerate(tokens):
+        if w in _SUBJECTS:
+            end = next((j for j in range(k + 1, len(tokens)) if tokens[j] in _CLAUSE_END), len(tokens))
+            out.append(tokens[k + 1 : end])
+    return out
+
+
+def _stands_on_foot(tokens: list[str]) -> bool:
+    """Whether the writer stands, walks or waits on foot: the subject of a verb of being on foot ("I
+    was stood", "I was walking the dog"), or somewhere for people on foot ("I was on the pavement",
+    "we were at the kerb", "I was in the bus shelter")."""
+    if any(on_foot_verb(tokens, k) for k in range(1, len(tokens))):
+        return True
+    for clause in _writer_clauses(tokens):
+        for n, x in enumerate(clause[:8]):
+            if x not in FOOT_PLACES | _WAITING_PLACES:
+                continue  # (not "at the bus stop": where a bus driver stands too)
+            before = [y for y in clause[:n] if y not in _ARTICLES]
+            if before and before[-1] in _WHERE:
+                return True  # ("I was on the pavement", "we were in the shelter"; not "I saw the crossing")
+    return False
+
+
+def _in_the_scene(tokens: list[str]) -> bool:
+    """Whether the writer goes into the road, rides or drives, has a number in their clause (a speed of
+    their own), or has something done to them or to their vehicle ("hit me", "clipped my mirror")."""
+    for clause in _writer_clauses(tokens):
+        if any(
+            x.isalpha() and lemma_in(x, _INTO_THE_ROAD | _ON_WHEELS) and clause[n - 1 : n] != ["to"]
+            for n, x in enumerate(clause[:5])
+        ):
+            return True  # ("I stepped off", "we were cycling"; not "waiting to cross": not yet)
+        if any(x.isdigit() for x in clause):
+            return True
+    for k, w in enumerate(tokens):
+        mine = w in ("my", "our") and vehicle_part_word(tokens[k + 1] if k + 1 < len(tokens) else "")
+        before = tokens[max(0, k - 3) : k]
+        if (w in _OBJECTS or mine) and any(x.isalpha() and lemma_in(x, _DONE_TO) for x in before):
+            return True  # ("stopped for us", "hit my door": the writer's own vehicle)
+        if w in _OBJECTS and set(before) & _RELATIVE_TO:
+            return True  # ("in front of me", "came past me": the writer is where the scene is placed from)
+    return False
+
+
+def bystander(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
+    """Whether the writer of ``tokens`` (as scanned) only watched from beside the road (see the module)."""
+    if not (_SUBJECTS & set(tokens)) or not _stands_on_foot(tokens) or not outside(tokens, kind_at, known):
+        return False
+    if _in_the_scene(tokens):
+        return False
+    named = {tokens[p.end - 1] for p in road_users(tokens, kind_at, known) if p.kind != "ego"}
+    return len(named | (_PERSONS & set(tokens))) >= 2  # (a road user, or a person: "a lad ran out")
+
+
+def _writers_words(tokens: list[str], k: int) -> int:
+    """Where the writer's own words that start at their "I" at ``k`` end: after the pronoun alone
+    before a verb of perceiving or saying ("I saw ...", "I would say ..."); else up to where they
+    were ("I was stood | on the pavement") or the clause's end."""
+    j = k + 1
+    while j < len(tokens) and tokens[j] not in _CLAUSE_END and tokens[j] not in _WHERE:
+        x = tokens[j]
+        if x.isalpha() and lemma_in(x, PERCEIVE | _SAYING):
+            return k + 1
+        j += 1
+    return j
+
+
+def without_writer(tokens: list[str], dropped: list[str]) -> list[str]:
+    """``tokens`` without a bystander writer (see :func:`bystander`): their "I" with what they were
+    doing, and the writer as an object or owner said "the witness" ("came past me": past someone who
+    is no road user)."""
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        w = tokens[k]
+        if w in _SUBJECTS:
+            cut = _writers_words(tokens, k)
+            dropped.extend(tokens[k:cut])
+            k = cut
+            continue
+        if w in FIRST_PERSON:
+            dropped.append(w)
+            out += ["the", "witness"] if w in _OBJECTS else ["the"]
+        else:
+            out.append(w)
+        k += 1
+    return out
