@@ -305,7 +305,9 @@ def without_road_user(actors: list, reading: Reading, k: int) -> list:
 def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is the ego's driver in a passenger's story: a
     person at a wheel named with no vehicle, nowhere said (no start, side, lane, kerb, side road), not
-    new to the story, not someone else, not watched from outside."""
+    new to the story, not someone else, not watched from outside, and not set somewhere by what is said
+    of it (:func:`_placed`), but that it waits: "Driver held back and waited for a gap" is what the
+    ego's driver does, and a driver with no vehicle parks none."""
     return (
         spec.kind == "car"
         and a.word in _AT_A_WHEEL
@@ -314,7 +316,7 @@ def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
         and a.relation is None
         and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside)
         and not ({"ahead", "behind", "oncoming"} & a.said)
-        and not _placed(a)
+        and not (a.passed or a.followed or a.hides or a.parked or a.group or a.member_named)
         and not a.seen
     )
 

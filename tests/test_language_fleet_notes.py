@@ -1,0 +1,28 @@
+"""Fleet managers' and driver coaches' notes on what a dash-cam clip shows: the bare "Driver" of such a
+note is the ego's own driver, whatever the driver does (brakes, holds back, waits), not one more car."""
+
+from __future__ import annotations
+
+import pytest
+
+from vei_scenario.language.reader import read
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Reviewed clip: cyclist riding in the bus lane on our nearside, doing nothing wrong. Driver held back, "
+        "waited for a safe gap and went round him with plenty of room.",
+        "Coach note: pedestrian stepped out from behind the ice cream van. Driver waited until she was across, "
+        "then moved off. Good anticipation.",
+        "An e-scooter came down the hill on our side. Driver stopped and waited for him to pass.",
+    ],
+)
+def test_the_bare_driver_who_waits_is_the_egos(text):
+    reading = read(text)
+    assert [a.kind for a in reading.actors if a.kind in ("car", "van", "truck")] == []
+
+
+def test_a_driver_of_a_vehicle_named_before_stays_theirs():
+    reading = read("A taxi stopped at the kerb ahead of us. The driver waited, then pulled out in front of us.")
+    assert [a.kind for a in reading.actors] == ["car"]
