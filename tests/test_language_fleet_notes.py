@@ -26,3 +26,31 @@ def test_the_bare_driver_who_waits_is_the_egos(text):
 def test_a_driver_of_a_vehicle_named_before_stays_theirs():
     reading = read("A taxi stopped at the kerb ahead of us. The driver waited, then pulled out in front of us.")
     assert [a.kind for a in reading.actors] == ["car"]
+
+
+@pytest.mark.parametrize(
+    ("text", "relation"),
+    [
+        (
+            "Taxi going straight on over the junction on green. An e-scooter comes out of Hauptstr. from the "
+            "right against his red and shoots across in front of the taxi. Driver brakes hard.",
+            "junction_right",
+        ),
+        (
+            "Van heading north. A cyclist pulled out of Station Rd. on the left without looking. Driver braked.",
+            "junction_left",
+        ),
+    ],
+)
+def test_an_abbreviations_point_ends_no_sentence(text, relation):
+    assert [a.relation for a in read(text).actors] == [relation]
+
+
+def test_a_writer_in_lower_case_ends_sentences_with_points():
+    from vei_scenario.language.normalise import abbreviation_points
+
+    text = "came round the bend. a cyclist was on my side. he swerved."
+    assert abbreviation_points(text) == text
+    assert abbreviation_points("It was dark. Then it rained. A van left Station Rd. on the right.") == (
+        "It was dark. Then it rained. A van left Station Rd on the right."
+    )

@@ -1177,6 +1177,26 @@ _TRAFFIC_AMOUNTS = {
 }  # fmt: skip
 
 
+#: A point after a word with its own capital, then spaces and a word in lower case ("out of Hauptstr.
+#: from the right", "near the Co. depot"); and a sentence's first letter after its end.
+_POINT_THEN_LOWER = re.compile(r"\b([A-Z][A-Za-z]*)\.(?=[ ]+[a-z])")
+_SENTENCE_START = re.compile(r"[.!?][ ]+([A-Za-z])")
+
+
+def abbreviation_points(text: str) -> str:
+    """``text`` (as written, before it is lowercased) without the points of abbreviations: where its
+    writer starts sentences with a capital (most of the letters after a sentence's end are), a point
+    after a word with its own capital and before a word in lower case ends an abbreviation ("came out
+    of Wildenbruchstr. from the right", "Station Rd. at 30"), not a sentence, and what follows still
+    belongs to the clause. A writer who types in lower case ends sentences so, and is left as written;
+    so is a point after a word in lower case (the reader's own rewording may put one there)."""
+    starts = [m.group(1) for m in _SENTENCE_START.finditer(text)]
+    upper = sum(c.isupper() for c in starts)
+    if upper < 2 or upper < 2 * (len(starts) - upper):
+        return text
+    return _POINT_THEN_LOWER.sub(r"\1", text)
+
+
 def normalise(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` (lowercased) with numbers in words, units, and the parties of a statement said the
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,

@@ -117,7 +117,14 @@ from vei_scenario.language.motion import (
 )
 from vei_scenario.language.ncap import rewrite as ncap_rewrite
 from vei_scenario.language.no_ones_place import without_places_of_no_one
-from vei_scenario.language.normalise import ANSWER_SAID, NUMBER_WORDS, normalise, plain_letters, speed_answered
+from vei_scenario.language.normalise import (
+    ANSWER_SAID,
+    NUMBER_WORDS,
+    abbreviation_points,
+    normalise,
+    plain_letters,
+    speed_answered,
+)
 from vei_scenario.language.object_participle import participle_phrase
 from vei_scenario.language.outcome import decide, into_road_user, outcome_cues
 from vei_scenario.language.phrasal_nouns import phrasal_compound
@@ -426,7 +433,7 @@ def _speller():
 def _normalised(text: str) -> str:
     """``text`` lowercased and normalised as :func:`_tokens` reads it (cached: a reading tokenises its
     text several ways, all from this)."""
-    text = text.lower().replace("\u2019", "'").replace("’", "'")
+    text = abbreviation_points(text).lower().replace("\u2019", "'").replace("’", "'")
     text = Q.ranges(normalise(Q.citations(text), _actor_noun_in))
     text = ncap_rewrite(text, _actor_word)
     return _NCAP_NAME.sub(_ncap_said, text)
