@@ -58,3 +58,11 @@ def test_a_writer_in_the_scene_is_no_bystander(text):
 def test_a_writer_who_steps_out_is_the_walker_a_vehicle_meets():
     reading = read("I stepped off the kerb with my sign and a taxi went straight past me at 30.")
     assert [a.kind for a in reading.actors] == ["pedestrian"]
+
+
+def test_a_bystanders_bare_speed_is_in_the_unit_of_their_signs():
+    reading = read(
+        "I was standing on the pavement outside the chemist. A white van was doing about 30 along the high "
+        "street when a boy on a scooter shot out from the left. The van braked hard."
+    )
+    assert reading.ego_speed_mps == pytest.approx(30 * 0.44704, abs=0.05)  # ("pavement": British, mph)

@@ -969,7 +969,7 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
     written = re.findall(r"[a-z]+|\d+", plain_letters(text.lower()))  # (as written, figures too, before any is read)
     imperial = imperial or said_in_miles_english(written)  # ("two hundred quid": British English)
     imperial = imperial or road_called_by_its_limit(tokens)  # ("doing 40 in a 30": a British town road)
-    narrated = motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are off their own speedometer)
+    narrated = bystander or motion.told_in_the_first_person(text, tokens)  # (whose bare speeds are their signs')
     imperial = imperial or (narrated and told_in_miles_english(written, text))  # ("I was doing 20 ... the pavement")
 
     def ending_at(k: int) -> int | None:  # the start of the road-user mention whose last word is token k
