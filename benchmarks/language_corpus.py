@@ -111,6 +111,8 @@ FIRST = {
     "language_independent_z58.json": ((50, 50, 11, 46), "measured when written"),
     "language_independent_z59.json": ((50, 50, 12, 48), "measured when written"),
     "language_independent_z60.json": ((50, 50, 13, 48), "measured when written"),
+    "language_independent_z61.json": ((50, 50, 1, 39), "measured when written"),
+    "language_independent_z62.json": ((50, 50, 11, 43), "measured when written"),
 }
 
 

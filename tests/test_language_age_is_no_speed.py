@@ -38,3 +38,9 @@ def test_speeds_said_beside_an_age_stay(text, kph):
         assert reading.ego_speed_mps == pytest.approx(kph / 3.6, abs=0.5)
     else:
         assert reading.actors[0].speed_mps == pytest.approx(20 / 3.6, abs=0.1)
+
+
+def test_a_height_is_no_age():
+    reading = read("A man of 1.8 m height stepped out from the left in front of me.")
+    assert reading.actors[0].distance_m in (None, 1.8)
+    assert reading.actors[0].relation == "roadside_left"

@@ -54,3 +54,10 @@ def test_a_writer_in_lower_case_ends_sentences_with_points():
     assert abbreviation_points("It was dark. Then it rained. A van left Station Rd. on the right.") == (
         "It was dark. Then it rained. A van left Station Rd on the right."
     )
+
+
+def test_an_acronym_before_a_missing_capital_still_ends_its_sentence():
+    from vei_scenario.language.normalise import abbreviation_points
+
+    text = "I was behind a VW. the cyclist ahead of it swerved. It was raining. We stopped."
+    assert abbreviation_points(text) == text

@@ -66,3 +66,24 @@ def test_a_bystanders_bare_speed_is_in_the_unit_of_their_signs():
         "street when a boy on a scooter shot out from the left. The van braked hard."
     )
     assert reading.ego_speed_mps == pytest.approx(30 * 0.44704, abs=0.05)  # ("pavement": British, mph)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I was stood at the red light in my car. The bus beside me moved off and a cyclist came from the left.",
+        "I was stood at the junction waiting to turn out. The lorry swung left and a cyclist went down its inside.",
+        "We were standing at the give way line when a taxi came round from the right and a scooter cut across.",
+        "I was stood at the zebra letting an old man over when a van overtook me and a cyclist followed it.",
+    ],
+)
+def test_a_driver_who_stands_at_the_lights_or_a_junction_stays_at_rest(text):
+    assert read(text).ego_speed_mps == 0.0
+
+
+def test_a_writer_something_is_done_to_is_no_bystander():
+    from vei_scenario.language.reader import _kind_at, _known, _tokens
+    from vei_scenario.language.witness_on_foot import bystander
+
+    text = "I was walking on the pavement and I was hit by the van's mirror as it passed a cyclist."
+    assert not bystander(_tokens(text), _kind_at, _known)

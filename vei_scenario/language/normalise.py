@@ -852,7 +852,7 @@ def _ages(text: str, known_noun) -> str:
 #: A person's age said after them: "aged about 8", "age 12", "aged 14-15", "a boy of about 8", "a lad of
 #: 15 or 16" (a number with no unit after it). Said so, it describes the person; left in, "about 8"
 #: would be read as a speed.
-_AGE_NUMBER = rf"(?:\d{{1,3}}|{_NUMBER_WORD})"
+_AGE_NUMBER = rf"(?:\d{{1,3}}(?![.,]\d)|{_NUMBER_WORD})"  # (not "a man of 1.8 m": a height)
 _AGE_HEDGE = r"(?:(?:about|around|approx\.?|approximately|roughly|maybe|perhaps|under|over|between|only)\s+)?"
 _AGED = re.compile(
     rf"\b(?:aged|age)\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or|and)\s*{_AGE_NUMBER})?\b"
@@ -1177,9 +1177,10 @@ _TRAFFIC_AMOUNTS = {
 }  # fmt: skip
 
 
-#: A point after a word with its own capital, then spaces and a word in lower case ("out of Hauptstr.
-#: from the right", "near the Co. depot"); and a sentence's first letter after its end.
-_POINT_THEN_LOWER = re.compile(r"\b([A-Z][A-Za-z]*)\.(?=[ ]+[a-z])")
+#: A point after a word with its own capital (and a small letter after it: "behind a VW. the cyclist"
+#: ends a sentence whose next capital was missed), then spaces and a word in lower case ("out of
+#: Hauptstr. from the right", "near the Co. depot"); and a sentence's first letter after its end.
+_POINT_THEN_LOWER = re.compile(r"\b([A-Z][a-z][A-Za-z]*)\.(?=[ ]+[a-z])")
 _SENTENCE_START = re.compile(r"[.!?][ ]+([A-Za-z])")
 
 

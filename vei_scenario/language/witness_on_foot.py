@@ -1,6 +1,6 @@
 """A writer on foot beside the road who tells what a vehicle and someone else did: a witness.
 
-"I was stood on the pavement when the lights changed. The tipper pulled away and a scooter came
+"I was on the pavement when the lights changed. The tipper pulled away and a scooter came
 across from the right against the red", "I was walking my dog on the pavement. The blue Corsa came
 past me and turned left, and a woman on a scooter rode into the side of it": a statement for the
 police or an insurer, or a reply to a witness appeal. The writer is in the story only as the one who
@@ -9,15 +9,17 @@ saw it; the scenario is the vehicle's, as in a report with no narrator, and read
 
 It is told apart by the writer's part in the words, and by the story having a scene of its own:
 
-- the writer stands, walks or waits on foot (the subject of a verb of being on foot,
-  :func:`vei_scenario.language.narrator_outside.on_foot_verb`, or "was on the pavement", "in the bus
-  shelter"; not "at the bus stop", where a bus driver stands too) and is in no vehicle of their own,
+- the writer walks (:func:`vei_scenario.language.narrator_outside.on_foot_verb`), or is somewhere
+  only people on foot are ("was on the pavement", "on the verge", "in the bus shelter"; not "stood
+  at the lights", "at the junction", "at the zebra" or "at the bus stop", where drivers stand and
+  wait too; not one whose own vehicle is named, "in my car") and is in no vehicle of their own,
   at no wheel and with no speed (:func:`vei_scenario.language.narrator_outside.outside`; no verb of
   riding or driving, no number in their clause), and nothing is placed from them ("in front of
   me", "came past us": the one the scene is placed from is in it);
 - the writer does not go into the road: not the subject of a verb of crossing or of stepping
   off or out ("I stepped off the kerb", "I was crossing the road": the walker a vehicle meets,
-  :mod:`vei_scenario.language.writer_on_foot`), and nothing hits, misses or stops for them;
+  :mod:`vei_scenario.language.writer_on_foot`), and nothing hits, misses or stops for them ("I was
+  hit by its mirror", "it stopped for us");
 - the story names at least two road users or people besides the writer, so that the vehicle has
   someone to meet: with one, the writer is the one it meets.
 
@@ -33,7 +35,8 @@ from __future__ import annotations
 from vei_scenario.language.discourse import PERCEIVE
 from vei_scenario.language.ego import KindAt, Known, lemma_in, road_users
 from vei_scenario.language.function_words import FIRST_PERSON
-from vei_scenario.language.narrator_outside import FOOT_PLACES, on_foot_verb, outside
+from vei_scenario.language.lemmas import lemmas
+from vei_scenario.language.narrator_outside import on_foot_verb, outside
 from vei_scenario.language.outcome import vehicle_part_word
 from vei_scenario.language.vocabulary import GENDERED
 
@@ -60,8 +63,16 @@ _WHERE = frozenset(
 )
 #: Words between a preposition and its place ("at the", "on my").
 _ARTICLES = frozenset({"the", "a", "an", "my", "our", "this", "that"})
-#: Places for people waiting on foot beside those of :data:`FOOT_PLACES` ("the bus shelter").
-_WAITING_PLACES = frozenset({"shelter"})
+#: Places only people on foot are at (a closed class): a writer there is off the road. Not the
+#: crossings of :data:`vei_scenario.language.narrator_outside.FOOT_PLACES` (a driver stops at a zebra)
+#: nor a kerb but "on" it.
+_WALKERS_PLACES = frozenset(
+    {"pavement", "pavements", "footpath", "footway", "sidewalk", "sidewalks", "verge", "towpath", "footbridge"}
+    | {"foot", "shelter", "doorway", "garden"}
+)
+_KERBS = frozenset({"kerb", "curb", "kerbside", "curbside"})
+#: Verbs (by lemma) of standing, which drivers say of themselves too ("I was stood at the lights").
+_STANDING = frozenset({"stand", "step"})
 
 
 def _writer_clauses(tokens: list[str]) -> list[list[str]]:
@@ -75,18 +86,21 @@ def _writer_clauses(tokens: list[str]) -> list[list[str]]:
 
 
 def _stands_on_foot(tokens: list[str]) -> bool:
-    """Whether the writer stands, walks or waits on foot: the subject of a verb of being on foot ("I
-    was stood", "I was walking the dog"), or somewhere for people on foot ("I was on the pavement",
-    "we were at the kerb", "I was in the bus shelter")."""
-    if any(on_foot_verb(tokens, k) for k in range(1, len(tokens))):
+    """Whether the writer is on foot off the road: the subject of a verb of walking ("I was walking the
+    dog", "we were strolling"), or somewhere only people on foot are ("I was on the pavement", "we
+    were on the verge", "I was in the bus shelter", "on the kerb"). Not "stood at the lights", "at
+    the junction", "at the zebra" or "at the kerb": drivers stand and wait there too."""
+    if any(on_foot_verb(tokens, k) and not lemma_in(tokens[k], _STANDING) for k in range(1, len(tokens))):
         return True
     for clause in _writer_clauses(tokens):
         for n, x in enumerate(clause[:8]):
-            if x not in FOOT_PLACES | _WAITING_PLACES:
-                continue  # (not "at the bus stop": where a bus driver stands too)
+            if x not in _WALKERS_PLACES and not (x in _KERBS and clause[n - 2 : n] in (["on", "the"], ["on"])):
+                continue
             before = [y for y in clause[:n] if y not in _ARTICLES]
+            if before[-1:] and before[-1] not in _WHERE and "NOUN" in lemmas(before[-1]):
+                before = before[:-1]  # ("in the bus shelter", "on the grass verge": a noun before it)
             if before and before[-1] in _WHERE:
-                return True  # ("I was on the pavement", "we were in the shelter"; not "I saw the crossing")
+                return True  # ("I was on the pavement", "we were in the shelter"; not "I saw the pavement")
     return False
 
 
@@ -99,6 +113,8 @@ def _in_the_scene(tokens: list[str]) -> bool:
             for n, x in enumerate(clause[:5])
         ):
             return True  # ("I stepped off", "we were cycling"; not "waiting to cross": not yet)
+        if any(x.isalpha() and lemma_in(x, _DONE_TO) for x in clause[:3]):
+            return True  # ("I was hit by its mirror", "we got clipped")
         if any(x.isdigit() for x in clause):
             return True
     for k, w in enumerate(tokens):
@@ -113,7 +129,9 @@ def _in_the_scene(tokens: list[str]) -> bool:
 
 def bystander(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     """Whether the writer of ``tokens`` (as scanned) only watched from beside the road (see the module)."""
-    if not (_SUBJECTS & set(tokens)) or not _stands_on_foot(tokens) or not outside(tokens, kind_at, known):
+    if not (_SUBJECTS & set(tokens)) or "ego" in tokens:
+        return False  # (no writer, or one whose own vehicle is named: "in my car")
+    if not _stands_on_foot(tokens) or not outside(tokens, kind_at, known):
         return False
     if _in_the_scene(tokens):
         return False
@@ -121,17 +139,21 @@ def bystander(tokens: list[str], kind_at: KindAt, known: Known) -> bool:
     return len(named | (_PERSONS & set(tokens))) >= 2  # (a road user, or a person: "a lad ran out")
 
 
-def _writers_words(tokens: list[str], k: int) -> int:
-    """Where the writer's own words that start at their "I" at ``k`` end: after the pronoun alone
-    before a verb of perceiving or saying ("I saw ...", "I would say ..."); else up to where they
-    were ("I was stood | on the pavement") or the clause's end."""
+def _writers_words(tokens: list[str], k: int) -> tuple[int, int, int]:
+    """The writer's own words that start at their "I" at ``k``, as (where the kept words start, where
+    they end, where the clause ends): only the pronoun goes before a verb of perceiving or saying
+    ("I saw ...", "I would say ..."); else what they were doing goes, but where they were stays ("I
+    was stood | on the pavement by the junction"), up to a verb of theirs after it ("... | waiting to
+    cross"), which goes too."""
+    end = next((j for j in range(k + 1, len(tokens)) if tokens[j] in _CLAUSE_END), len(tokens))
     j = k + 1
-    while j < len(tokens) and tokens[j] not in _CLAUSE_END and tokens[j] not in _WHERE:
+    while j < end and tokens[j] not in _WHERE:
         x = tokens[j]
         if x.isalpha() and lemma_in(x, PERCEIVE | _SAYING):
-            return k + 1
+            return k + 1, end, end
         j += 1
-    return j
+    verb = next((v for v in range(j, end) if tokens[v].endswith("ing") and "VERB" in lemmas(tokens[v])), end)
+    return j, verb, end
 
 
 def without_writer(tokens: list[str], dropped: list[str]) -> list[str]:
@@ -143,9 +165,10 @@ def without_writer(tokens: list[str], dropped: list[str]) -> list[str]:
     while k < len(tokens):
         w = tokens[k]
         if w in _SUBJECTS:
-            cut = _writers_words(tokens, k)
-            dropped.extend(tokens[k:cut])
-            k = cut
+            keep, stop, end = _writers_words(tokens, k)
+            dropped.extend(tokens[k:keep] + tokens[stop:end])
+            out += tokens[keep:stop]
+            k = end
             continue
         if w in FIRST_PERSON:
             dropped.append(w)
