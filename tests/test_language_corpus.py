@@ -127,6 +127,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z58.json": (50, 18),
     ROOT / "tests" / "data" / "language_independent_z59.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z60.json": (50, 13),
+    ROOT / "tests" / "data" / "language_independent_z61.json": (50, 1),
+    ROOT / "tests" / "data" / "language_independent_z62.json": (50, 11),
 }
 
 
