@@ -92,12 +92,12 @@ _COMPOUND_HEADS = frozenset(
      "type", "types", "category", "categories", "sport", "sports")
 )  # fmt: skip
 #: Objects that make a contact verb something else ("hit the brakes", "hit the gas", "clipped the kerb").
-_NOT_ROAD_USERS = frozenset(
-    ("brake", "brakes", "gas", "accelerator", "pedal", "throttle", "horn", "pothole", "puddle", "button", "road",
-     "jackpot", "traffic", "red", "green", "lights", "light", "speed", "mph", "km/h", "m/s", "limit", "eye", "base")
-)  # fmt: skip
 #: The controls a driver presses, met by no contact verb ("hit the brakes", "hit to the brakes").
 _CONTROLS_PRESSED = frozenset(("brake", "brakes", "gas", "accelerator", "pedal", "throttle", "horn"))
+_NOT_ROAD_USERS = _CONTROLS_PRESSED | frozenset(
+    ("pothole", "puddle", "button", "road", "jackpot", "traffic", "red", "green", "lights", "light", "speed", "mph",
+     "km/h", "m/s", "limit", "eye", "base")
+)  # fmt: skip
 #: The closed class of object pronouns and reciprocal phrases: who is met or missed.
 _PERSON_OBJECTS = frozenset(("me", "us", "him", "her", "it", "them", "you", "each", "one"))
 _POSSESSIVES = frozenset(("my", "our", "his", "her", "its", "their", "your"))
@@ -2003,8 +2003,7 @@ _ONTO_BRAKE = frozenset(("on", "onto", "to", "in", "at"))
 def _brakes_worked(words: list[str], i: int) -> bool:
     """Whether the verb at ``i`` takes the brake as its object, up to a determiner and a preposition
     between ("hit the brakes", "got on the brake", "hit to the brakes", "used his brake"): a brake said
-    with its noun. Not the
-    brake as what something else does ("pushed the car with the brakes off")."""
+    with its noun. Not the brake as what something else does ("pushed the car with the brakes off")."""
     k = i + 1
     while k < len(words) and k <= i + 3 and (words[k] in _DETERMINERS | _POSSESSIVES or words[k] in _ONTO_BRAKE):
         k += 1

@@ -941,7 +941,7 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
     tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
     tokens = model_said_again(tokens, _kind_at, _known)  # ("a Honda Civic ... the Civic": the Honda)
     tokens = protagonist.without_witness(tokens, framed)  # ("I saw a lad run the red": a witness)
-    bystander = witness_on_foot.bystander(tokens, _kind_at, _known)  # ("I was at the bus stop ...": only saw it)
+    bystander = witness_on_foot.bystander(tokens, _kind_at, _known)  # ("I was on the pavement ...": only saw it)
     tokens = witness_on_foot.without_writer(tokens, framed) if bystander else tokens
     tokens = ego.frame(tokens, _kind_at, _known, framed, protagonist.frame)  # (by a role, its driver, a witness)
     tokens = owned_by_name.frame(tokens, _kind_at, _known, framed)  # ("Lena's Mini", "the survey team's van")
