@@ -160,10 +160,16 @@ def names_the_ego(text: str) -> bool:
     return _EGO_NAMED.search(text) is not None
 
 
+def _marked_out(a: _Said) -> bool:
+    """Whether what is said about ``a`` marks it out as someone the ego meets: followed or passed by
+    the ego, named in a group or picked out of one, parked, or what someone comes out from behind."""
+    return bool(a.passed or a.followed or a.hides or a.parked or a.group or a.member_named)
+
+
 def _placed(a: _Said) -> bool:
-    """Whether the words set ``a`` somewhere by what is said about it: followed or passed by the ego,
-    named in a group or picked out of one, parked or standing, or what someone comes out from behind."""
-    return bool(a.passed or a.followed or a.hides or a.parked or a.stationary or a.group or a.member_named)
+    """Whether the words set ``a`` somewhere by what is said about it: marked out (:func:`_marked_out`),
+    or standing."""
+    return _marked_out(a) or bool(a.stationary)
 
 
 def stops_for_someone(spec: ActorSpec, specs: list) -> bool:
@@ -305,9 +311,9 @@ def without_road_user(actors: list, reading: Reading, k: int) -> list:
 def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
     """Whether road user ``spec`` (gathered as ``a``) is the ego's driver in a passenger's story: a
     person at a wheel named with no vehicle, nowhere said (no start, side, lane, kerb, side road), not
-    new to the story, not someone else, not watched from outside, and not set somewhere by what is said
-    of it (:func:`_placed`), but that it waits: "Driver held back and waited for a gap" is what the
-    ego's driver does, and a driver with no vehicle parks none."""
+    new to the story, not someone else, not watched from outside, and not marked out by what is said of
+    it (:func:`_marked_out`; that it waits does not: "Driver held back and waited for a gap" is what the
+    ego's driver does, and a driver with no vehicle parks none)."""
     return (
         spec.kind == "car"
         and a.word in _AT_A_WHEEL
@@ -316,7 +322,7 @@ def _ego_driver(a: _Said, spec: ActorSpec) -> bool:
         and a.relation is None
         and not (a.side or a.lane_side or a.kerb or a.kerb_side or a.from_arm or a.beside)
         and not ({"ahead", "behind", "oncoming"} & a.said)
-        and not (a.passed or a.followed or a.hides or a.parked or a.group or a.member_named)
+        and not _marked_out(a)
         and not a.seen
     )
 

@@ -854,16 +854,16 @@ def _ages(text: str, known_noun) -> str:
 #: would be read as a speed.
 _AGE_NUMBER = rf"(?:\d{{1,3}}(?![.,]\d)|{_NUMBER_WORD})"  # (not "a man of 1.8 m": a height)
 _AGE_HEDGE = r"(?:(?:about|around|approx\.?|approximately|roughly|maybe|perhaps|under|over|between|only)\s+)?"
+#: No unit after the number: "aged 12" is an age, "12 m" or "12 mph" is not.
+_NO_UNIT_AFTER = r"(?!\s*(?:mph|km|kph|kmh|m/s|m\b|metres|meters|feet|ft|yards|%))"
 _AGED = re.compile(
-    rf"\b(?:aged|age)\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or|and)\s*{_AGE_NUMBER})?\b"
-    r"(?!\s*(?:mph|km|kph|kmh|m/s|m\b|metres|meters|feet|ft|yards|%))"
+    rf"\b(?:aged|age)\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or|and)\s*{_AGE_NUMBER})?\b{_NO_UNIT_AFTER}"
 )
 #: The people an age follows with "of" ("a boy of 8"), a closed class.
 _PEOPLE = ("boy", "girl", "lad", "lass", "kid", "child", "youth", "teenager", "teen", "man", "woman", "lady",
            "bloke", "guy", "chap", "fella", "gentleman", "person", "son", "daughter", "pedestrian")  # fmt: skip
 _OF_AGE = re.compile(
-    rf"\b({'|'.join(_PEOPLE)})s?\s+of\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or)\s*{_AGE_NUMBER})?\b"
-    r"(?!\s*(?:mph|km|kph|kmh|m/s|m\b|metres|meters|feet|ft|yards|%))"
+    rf"\b({'|'.join(_PEOPLE)})s?\s+of\s+{_AGE_HEDGE}{_AGE_NUMBER}(?:\s*(?:-|to|or)\s*{_AGE_NUMBER})?\b" + _NO_UNIT_AFTER
 )
 
 

@@ -75,12 +75,17 @@ _KERBS = frozenset({"kerb", "curb", "kerbside", "curbside"})
 _STANDING = frozenset({"stand", "step"})
 
 
+def _clause_end(tokens: list[str], start: int) -> int:
+    """Where the clause going on at ``start`` ends (at a mark or a joining word, or the text's end)."""
+    return next((j for j in range(start, len(tokens)) if tokens[j] in _CLAUSE_END), len(tokens))
+
+
 def _writer_clauses(tokens: list[str]) -> list[list[str]]:
     """The words of each clause the writer is the subject of, from their "I"/"we" to its end."""
     out = []
     for k, w in enumerate(tokens):
         if w in _SUBJECTS:
-            end = next((j for j in range(k + 1, len(tokens)) if tokens[j] in _CLAUSE_END), len(tokens))
+            end = _clause_end(tokens, k + 1)
             out.append(tokens[k + 1 : end])
     return out
 
@@ -145,7 +150,7 @@ def _writers_words(tokens: list[str], k: int) -> tuple[int, int, int]:
     ("I saw ...", "I would say ..."); else what they were doing goes, but where they were stays ("I
     was stood | on the pavement by the junction"), up to a verb of theirs after it ("... | waiting to
     cross"), which goes too."""
-    end = next((j for j in range(k + 1, len(tokens)) if tokens[j] in _CLAUSE_END), len(tokens))
+    end = _clause_end(tokens, k + 1)
     j = k + 1
     while j < end and tokens[j] not in _WHERE:
         x = tokens[j]
