@@ -113,6 +113,8 @@ FIRST = {
     "language_independent_z60.json": ((50, 50, 13, 48), "measured when written"),
     "language_independent_z61.json": ((50, 50, 1, 39), "measured when written"),
     "language_independent_z62.json": ((50, 50, 11, 43), "measured when written"),
+    "language_independent_z63.json": ((50, 50, 1, 48), "measured when written"),
+    "language_independent_z64.json": ((50, 50, 6, 41), "measured when written"),
 }
 
 

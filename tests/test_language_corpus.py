@@ -129,6 +129,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z60.json": (50, 13),
     ROOT / "tests" / "data" / "language_independent_z61.json": (50, 1),
     ROOT / "tests" / "data" / "language_independent_z62.json": (50, 11),
+    ROOT / "tests" / "data" / "language_independent_z63.json": (50, 1),
+    ROOT / "tests" / "data" / "language_independent_z64.json": (50, 6),
 }
 
 
