@@ -63,6 +63,39 @@ def test_the_narrators_own_speed_after_a_comment_stays_the_egos(text, kph):
     assert _ego_kph(text) == kph
 
 
+# --- a comment right beside another road user's speed, with no clause of its own ----------------------
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        (
+            "I was driving at 40 km/h. A girl on an e-scooter came towards me on the wrong side, very fast, I would"
+            " say 25 km/h.",
+            25,
+        ),
+        ("Doing 50 km/h on the bypass when a motorbike went past me, I reckon about 100 km/h, and cut in.", 100),
+        ("I was on 30 km/h when a delivery van came past at 70 km/h I'd say, then braked.", 70),
+        ("We were at 45 km/h. A cyclist came down the hill the wrong way, I'd guess at around 35 km/h.", 35),
+    ],
+    ids=["id-would-say-after-comma", "i-reckon-about", "id-say-after-the-speed", "id-guess-at-around"],
+)
+def test_a_comment_beside_anothers_speed_leaves_it_theirs(text, kph):
+    assert kph in _adversary_kph(text)
+    assert _ego_kph(text) != kph
+
+
+@pytest.mark.parametrize(
+    "text, kph",
+    [
+        ("I was going along quite quickly, I'd say 60 km/h, when a van pulled out of a side road on my left.", 60),
+        ("A cyclist was ahead of me. I'd say 30 km/h was my speed when he braked.", 30),
+        ("I'd say I was doing 40 km/h when a scooter came out from the right.", 40),
+    ],
+    ids=["narrators-own-clause", "comment-opens-a-sentence", "comment-before-its-clause"],
+)
+def test_a_comment_beside_the_narrators_speed_leaves_it_the_egos(text, kph):
+    assert _ego_kph(text) == kph
+
+
 # --- "<judge> <road user> at <speed>": the speed is the object's ----------------------------------------
 @pytest.mark.parametrize(
     "text, kph",

@@ -92,7 +92,7 @@ from vei_scenario.language import settings as S
 from vei_scenario.language import vocabulary as V
 from vei_scenario.language.behaviours import BEHAVIOURS
 from vei_scenario.language.clauses import sentence_start, sentence_stop
-from vei_scenario.language.comment_clause import without_comment_clauses
+from vei_scenario.language.comment_clause import without_comment_clauses, without_comments_beside_speeds
 from vei_scenario.language.elsewhere import stands_elsewhere
 from vei_scenario.language.function_words import DETERMINERS, PHRASE_ENDS
 from vei_scenario.language.gherkin_outline import filled_outline
@@ -951,6 +951,7 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
     tokens = ego_speed.the_limit_then_its_number(tokens)  # ("doing the limit, seventy, when": doing 70)
     tokens = without_comment_clauses(tokens)  # ("I reckon he was doing 90": he was doing 90)
     tokens = Q.without_guesses(tokens, _MOTION_BEFORE_SPEED)  # ("going, I don't know, 40": going 40)
+    tokens = without_comments_beside_speeds(tokens)  # ("came out fast, I'd say 25 km/h": its 25 km/h)
     proper = proper_names(text)
     tokens = shared_scooters(tokens, proper, lambda w: "VERB" in _pos(w))  # ("a Lime came past": an e-scooter)
     tokens = named_riders.named_riders(
