@@ -372,3 +372,32 @@ def test_seen_late_then_passed_wide_is_a_safe_pass():
 )
 def test_a_disaster_nearly_had(text, intent):
     assert _intent(text) == intent
+
+
+#: a person who springs clear on foot, out of the way or back when forced to: a near miss
+ESCAPED_ON_FOOT = [
+    "I went through the crossing on amber and a man stepping off the kerb had to step back.",
+    "The bus pulled out of the stop and an old woman had to jump back onto the pavement.",
+    "A taxi turned into the side road and the jogger crossing it jumped out of the way.",
+    "The van reversed out of the drive; the postman had to leap clear.",
+    "Our car rolled forward at the zebra and the lady with the pram had to get out of its way.",
+    "Car turned left across the crossing, ped dived out of the way.",
+]
+#: a step by choice, an escape denied or under a condition, or a contact after it: not read so
+ESCAPED_ON_FOOT_NOT = [
+    ("The pedestrian stepped back to let me through.", "safe"),
+    ("A man stepped out. He didn't have to jump out of the way, I had stopped well back.", "safe"),
+    ("A boy ran out and I hit him. He had tried to jump out of the way.", "collision"),
+    ("If the van had kept going she would have had to jump out of the way.", None),
+    ("A cyclist stopped at the lights and stepped back onto the pavement.", None),
+]
+
+
+@pytest.mark.parametrize("text", ESCAPED_ON_FOOT)
+def test_a_person_springing_clear_is_a_near_miss(text):
+    assert _intent(text) == "near_miss"
+
+
+@pytest.mark.parametrize("text, intent", ESCAPED_ON_FOOT_NOT)
+def test_a_step_by_choice_or_denied_is_no_escape(text, intent):
+    assert _intent(text) == intent

@@ -3101,6 +3101,8 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
                     add(act)
             elif _is_verb(w) and _road_user_evades(words, i):
                 add("escape")  # (a named road user's hard brake or swerve: "the Prius swerved", "SUT braked hard")
+            elif _is_verb(w) and _escaped_on_foot(words, i):
+                add("evade")  # (a person who had to spring clear: "she had to step back", "jumped out of the way")
             elif _lemmas(w) & {"let", "give", "yield"} and _is_verb(w) and not w.endswith("ing"):
                 if _ego_acts(words, i) == "yield" and not _denied_before(words, i) and not _failure_to(words, i):
                     add("yield")  # (someone gives way or lets the other go: no conflict)
@@ -3262,6 +3264,32 @@ def _lets_another_go(words: list[str], i: int, rest: list[str]) -> bool:
 
 #: The last words of the lexicon's names for the ego's vehicle ("SUT", "the test vehicle", "host").
 _EGO_NOUN_HEADS = frozenset(p.split()[-1] for p in L.EGO_NOUNS) - _PERSON_OBJECTS
+
+
+#: Verbs (lemmas) of a person's own quick move on foot ("jumped back", "stepped aside", "dived clear").
+_ON_FOOT_MOVES = frozenset(("jump", "leap", "dive", "step", "hop", "spring", "scramble", "get", "throw"))
+#: Words after such a move that take its doer away from a path ("back", "aside", "clear").
+_AWAY = frozenset(("back", "aside", "clear", "sideways", "backwards"))
+
+
+def _out_of_the_way(after: list[str]) -> bool:
+    """Whether ``after`` opens with "out of the way" or "out of its/his/her/their/my way"."""
+    return after[:2] == ["out", "of"] and after[3:4] == ["way"] and after[2] in _POSSESSIVES | {"the"}
+
+
+def _escaped_on_foot(words: list[str], i: int) -> bool:
+    """Whether the verb at ``i`` is a person's escape on foot: out of the way ("jumped out of the
+    way", "had to get out of his way"), or back or aside when forced to ("had to step back", "was
+    forced to jump clear"). Why: a walker or rider who has to spring clear was nearly met, as the
+    ego's swerve says it nearly met someone. Not one denied or under a condition ("didn't have to
+    step back", "would have had to jump out of the way"), nor a move by choice ("stepped back to let
+    me through": no "had to")."""
+    if not _lemmas(words[i]) & _ON_FOOT_MOVES or _denied_before(words, i) or _scoped(words, i, _UNREAL, 4):
+        return False
+    after = words[i + 1 : i + 6]
+    if _out_of_the_way(after):
+        return True
+    return bool(after[:1]) and after[0] in _AWAY and _compelled(words, i)
 
 
 def _road_user_evades(words: list[str], i: int) -> bool:
