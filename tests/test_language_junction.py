@@ -478,3 +478,31 @@ THROUGH_NEAR_MISSES = [
 @pytest.mark.parametrize("text, relation", THROUGH_NEAR_MISSES)
 def test_a_rider_placed_off_the_road_keeps_its_kerb(text, relation):
     assert [rel for _, rel in _start(text)] == [relation]
+
+
+# a participle of turning that opens the sentence, then a comma and a walker: the writer's turn, which
+# notes let dangle; a walker turns into no road and stays a walker
+DANGLING_TURNS = [
+    ("Turning right into Mill Lane, an old man was halfway across the side road.", "right"),
+    ("Turning left onto Park Street, a woman with a pram stepped off the kerb in front of us.", "left"),
+    ("While turning right at the crossroads, a pedestrian started to cross the road we were turning into.", "right"),
+    ("Turning left into the car park, a kid ran across the entrance.", "left"),
+]
+#: a rider or a vehicle after the comma may be the one turning: no route is given to the ego
+DANGLING_TURNS_KEPT = [
+    "Turning left into Mill Lane, the cyclist wobbled and fell off.",
+    "Turning right into the side road, the lorry mounted the pavement.",
+]
+
+
+@pytest.mark.parametrize("text, route", DANGLING_TURNS)
+def test_a_turn_dangling_before_a_walker_is_the_writers(text, route):
+    r = read(text)
+    assert r.ego_route == route
+    assert [a.kind for a in r.actors] == ["pedestrian"]
+    assert not any(b[0] in ("turn_into", "forced_turn", "turn_across") for a in r.actors for b in a.behaviours)
+
+
+@pytest.mark.parametrize("text", DANGLING_TURNS_KEPT)
+def test_a_turn_dangling_before_a_rider_or_vehicle_stays_theirs(text):
+    assert read(text).ego_route is None

@@ -2425,6 +2425,7 @@ def _read(text: str) -> Reading:
                         pending = _left_out_subjects_acts(pending, prev, r, link, added)
                     subject = clause_subject = who
                     seen = [a for a in actors if not a.stationary] or actors
+                    pending = _walkers_do_not_turn(pending, who, r, link, added)
                     for p in pending:
                         # ("about 20 m away when I saw him": the ego has no gap to itself; the one seen has)
                         gap_of_seen = who == "ego" and p.slot == "distance" and seen
@@ -3300,6 +3301,20 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
         and p.end <= prev.start
         and (not p.words.split()[0].endswith("ing") or p.slot == "turn")
     ]
+    for p in mine:
+        _apply(p, "ego", r, link, added)
+    return [p for p in pending if all(p is not x for x in mine)]
+
+
+def _walkers_do_not_turn(pending: list, who, r: Reading, link: str, added: list) -> list:
+    """``pending`` with a participle of turning that opened the sentence put on the ego when the subject
+    its comma leads to is a walker ("Turning right into Elm Grove, a man was already crossing the side
+    road"): a walker turns into no road, so the participle dangles, as notes let it, from the writer
+    who drives. A rider or a vehicle may be the one turning ("Turning left, the cyclist wobbled") and
+    keeps it."""
+    if not isinstance(who, _Actor) or who.kind != "pedestrian":
+        return pending
+    mine = [p for p in pending if p.slot == "turn" and p.words.split()[0].endswith("ing")]
     for p in mine:
         _apply(p, "ego", r, link, added)
     return [p for p in pending if all(p is not x for x in mine)]
