@@ -61,6 +61,26 @@ def test_a_pupil_introduced_with_a_is_a_road_user():
     assert _kinds("A pupil ran out from the school gate in front of the ego at 30 km/h.") == ["pedestrian"]
 
 
+# A driving test's own words for the person tested: "cand" in an examiner's marking sheet, "applicant"
+# in North American and Australian test reports, at a road speed, are the ego.
+@pytest.mark.parametrize(
+    "text, kinds, kph",
+    [
+        ("Cand following a cyclist at about 15 mph, 2 m behind him. Cyclist braked sharply for a pothole.",
+         ["bicycle"], 24.1),
+        ("Applicant following an e-scooter at about 25 km/h, 2 m behind it, when the rider braked hard.",
+         ["e-scooter"], 25.0),
+    ],
+)  # fmt: skip
+def test_a_test_candidate_at_a_road_speed_is_the_ego(text, kinds, kph):
+    assert _kinds(text) == kinds
+    assert _ego_kph(text) == kph
+
+
+def test_an_applicant_introduced_with_an_is_no_ego():
+    assert _ego_kph("An applicant rode past the test centre on a bike at 15 km/h while I waited.") != 15.0
+
+
 # A news report in the third person: the one vehicle that strikes a walker or rider is the ego.
 @pytest.mark.parametrize(
     "text, kinds, kph",

@@ -55,7 +55,7 @@ CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "plough", "mow
 #: Words of driving a vehicle, after the person at its wheel ("Dave, who's driving a bin lorry").
 DRIVING = frozenset({"driving", "drives", "drove", "driven"})
 #: Roles of the person a driving lesson is about: at a road speed or at a wheel, that person drives.
-LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "student"})
+LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "cand", "applicant", "student"})
 #: Roles of the party a claim is made for: always the one the statement is told for.
 PARTY = frozenset({"client", "claimant", "insured", "policyholder", "complainant"})
 #: Roles of the person a report is taken from ("Cust states ...", "RP traveling 65 mph", "Caller was
