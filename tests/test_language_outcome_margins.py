@@ -102,3 +102,28 @@ SAID_OF_SOMEONE = [
 @pytest.mark.parametrize("text", SAID_OF_SOMEONE)
 def test_safety_said_of_someone_is_safe(text: str) -> None:
     assert _intent(text) == "safe"
+
+
+#: "a good" length after "for", "over" or "along" is a stretch of road gone along, no margin: what else
+#: is said decides
+STRETCH_GONE_ALONG = [
+    ("I sat 2 m behind the van for a good 200 m. It braked sharply and I had to brake hard.", "near_miss"),
+    ("He tailgated me for a good 300 metres, then overtook and cut in.", None),
+    ("The cyclist rode in front of us over a good 100 m, then swerved and I braked hard. No contact.", "near_miss"),
+]
+#: the margin of a pass or a stop with "a good" length stays a wide one
+GOOD_MARGIN_KEPT = [
+    "She passed the cyclist with a good 2 metres.",
+    "The van passed me with a good 2 metres to spare.",
+    "I stopped a good 10 metres away from her.",
+]
+
+
+@pytest.mark.parametrize("text, intent", STRETCH_GONE_ALONG)
+def test_a_good_stretch_gone_along_is_no_margin(text, intent):
+    assert _intent(text) == intent
+
+
+@pytest.mark.parametrize("text", GOOD_MARGIN_KEPT)
+def test_a_good_margin_is_still_wide(text):
+    assert _intent(text) == "safe"

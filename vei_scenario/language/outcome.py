@@ -1640,14 +1640,21 @@ def _stop_before_someone(words: list[str], i: int) -> bool:
     return stop and bool(obj) and (obj[0] in _PERSON_OBJECTS or names_road_user(obj))
 
 
+#: Prepositions of a stretch of road gone along ("for a good 200 m", "over a good kilometre").
+_ALONG_THE_ROAD = frozenset(("for", "over", "after", "along"))
+
+
 def _ample_measure(words: list[str], i: int) -> bool:
     """Whether the unit of length at ``i`` is said with "a good" right before its number or itself ("a
     good 2 metres", "a good metre to spare", "still a good 10 metres away"): "good" before a measure
     says the length was at least that, so the margin's thresholds apply to it as a lower bound. Not "a
-    good few" (several), nor a length from the kerb or a line (where someone is, not a margin)."""
+    good few" (several), nor a length from the kerb or a line (where someone is, not a margin), nor a
+    stretch of road gone along ("for a good 200 m")."""
     if words[i] not in _UNIT_METRES or set(words[i + 1 : i + 5]) & _EDGES_AND_LINES:
         return False
     k = next((k for k in range(max(0, i - 2), i) if words[k - 1 : k + 1] == ["a", "good"]), None)
+    if k is not None and words[max(0, k - 2) : k - 1] and words[k - 2] in _ALONG_THE_ROAD:
+        return False  # ("sat 2 m behind him for a good 200 m": how far it went, no margin)
     return k is not None and (k + 1 == i or _number(words[k + 1]) is not None)
 
 
