@@ -10,6 +10,7 @@ import pytest
 
 from vei_scenario.language.layers import behaviour_nodes
 from vei_scenario.language.normalise import normalise
+from vei_scenario.language.reader import read
 from vei_scenario.language.rules_backend import layers_from_text
 
 
@@ -105,3 +106,18 @@ def test_a_length_of_no_gap_to_the_ego_stays_none(text: str, kind: str, length: 
     """A visibility, a place from the kerb, the ego's own travel, a width between others, the room a pass
     was made with (side by side, across the road) and the size of a thing are no road user's gap."""
     assert _gaps(text, kind) and not _has(text, kind, length), _gaps(text, kind)
+
+
+# a length after "for" is how far someone went ("for a good 200 m"), as a time after "for" is how long:
+# neither is a gap; a gap said beside it stays
+@pytest.mark.parametrize(
+    "text, gap",
+    [
+        ("I followed a cyclist at about 15 mph, no more than 2 m behind him for a good 200 m.", 2.0),
+        ("A van tailgated me for 300 metres, then overtook.", None),
+        ("An e-scooter 30 m ahead of us rode along in front for about 400 m.", 30.0),
+        ("A lorry sat on my bumper for 10 seconds and then overtook.", None),
+    ],
+)
+def test_a_stretch_gone_along_is_no_gap(text, gap):
+    assert [a.distance_m for a in read(text).actors] == [gap]

@@ -962,6 +962,24 @@ def a_size(tokens: list[str], i: int, used: int) -> bool:
     return after[0] == "across" and (len(after) < 2 or after[1] in _STOPS or after[1] in (",", "and", "or"))
 
 
+#: Words between "for" and the length of a stretch gone along ("for a good 200 m", "for about 300
+#: metres", "for the last 100 m", "for another 50 m").
+_STRETCH_HEDGES = frozenset(
+    {"a", "good", "about", "around", "roughly", "nearly", "almost", "another", "at", "least", "the", "last",
+     "next", "first", "best", "part", "of", "maybe", "some", "over", "well", "easily", "approx", "approximately"}
+)  # fmt: skip
+
+
+def a_stretch(tokens: list[str], i: int) -> bool:
+    """Whether the length at ``i`` is how far someone went, not how far apart: "for" before it with
+    only hedges between ("sat 2 m behind him for a good 200 m", "tailgated me for 300 metres"). English
+    says a stretch of road gone along as it says a time, with "for"; the gap is said apart ("2 m")."""
+    k = i - 1
+    while k >= 0 and i - k <= 4 and tokens[k] in _STRETCH_HEDGES:
+        k -= 1
+    return k >= 0 and tokens[k] == "for"
+
+
 #: How far back in its clause "visibility" may head a length ("visibility was down to about 50 m").
 _SEEING_REACH = 7
 #: Verbs (lemmas) "visibility" comes to a length with ("visibility was/dropped/was reduced to 50 m").
