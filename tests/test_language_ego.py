@@ -1070,3 +1070,27 @@ def test_a_reporters_role_is_the_ego(text: str, kinds: list[str], kph: float) ->
 )
 def test_a_reporters_role_that_is_no_subject_of_the_report_is_not_the_ego(text: str) -> None:
     assert "van" in _kinds(text)
+
+
+# A learner who does what only a driver does ("eased off", "indicated and emerged") drives the ego, even
+# with no road speed in the sentence, and also where the instructor tells it as "we" and "us"; a learner
+# who runs or crosses is on foot.
+@pytest.mark.parametrize(
+    "text, kinds",
+    [
+        ("A cyclist coming towards us turned right across our path. Pupil had already eased off and let him go.",
+         ["bicycle"]),
+        ("Turning out of the side road, the candidate emerged into the path of a van, which braked hard.",
+         ["van"]),
+        ("The learner indicated late and a cyclist on our inside had to brake.", ["bicycle"]),
+        ("On the estate road the pupil braked hard as a man stepped out in front of us.", ["pedestrian"]),
+        ("Lesson notes: we came down to the zebra and the pupil braked late, so a woman crossing had to step back.",
+         ["pedestrian"]),
+    ],
+)  # fmt: skip
+def test_a_learner_at_the_controls_is_the_ego(text, kinds):
+    assert _kinds(text) == kinds
+
+
+def test_a_learner_who_runs_is_on_foot():
+    assert _kinds("We were doing 30 km/h when the pupil ran out from the school gate.") == ["pedestrian"]

@@ -769,21 +769,25 @@ def _labelled_driver(tokens: list[str], kind_at: KindAt, known: Known, dropped: 
     return as_ego(out, kind_at, known, noun, dropped)
 
 
-def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
+def _role(tokens: list[str], kind_at: KindAt, named: frozenset[str] = LEARNER | PARTY) -> list[str]:
     """A person named by the role a driving lesson or a claim gives them ("Pupil approached the
     roundabout at 20 mph", "the policyholder was travelling"): a learner in a sentence that gives a
-    road speed, or a party to a claim, is the ego (each mention not introduced with "a")."""
+    road speed or who does what only a driver does ("Pupil eased off"), or a party to a claim, is the
+    ego (each mention not introduced with "a"), unless what it does is a walker's ("we were doing 30
+    km/h when the pupil ran out"). ``named``: the roles looked for."""
     out = list(tokens)
-    roles = _reporters(tokens)
+    roles = _reporters(tokens) if named & PARTY else set()
     for i, w in enumerate(tokens):
-        if w not in LEARNER | PARTY or (i and tokens[i - 1] in INDEFINITE):
+        if w not in named or (i and tokens[i - 1] in INDEFINITE):
             continue
         s, e = i, i
         while s > 0 and tokens[s - 1] not in SENTENCE_END:
             s -= 1
         while e < len(tokens) and tokens[e] not in SENTENCE_END:
             e += 1
-        if w in PARTY or any(u in SPEED_UNITS for u in tokens[s:e]):
+        if _verb_after(tokens, i + 1, _ON_FOOT):
+            continue  # (a pupil who runs out is a walker)
+        if w in PARTY or any(u in SPEED_UNITS for u in tokens[s:e]) or _verb_after(tokens, i + 1, _AT_THE_CONTROLS):
             roles.add(w)
     if not roles:
         return tokens
@@ -796,6 +800,29 @@ def _role(tokens: list[str], kind_at: KindAt) -> list[str]:
             continue
         said.append(w)
     return said
+
+
+#: Verbs (lemmas) only the one at a vehicle's controls does: a learner who does one drives ("Pupil
+#: eased off to about 30", "the candidate indicated and emerged"). Not "slow", "stop" or "pull", which a
+#: pupil on foot does too.
+_AT_THE_CONTROLS = frozenset(
+    {"brake", "accelerate", "indicate", "signal", "steer", "overtake", "reverse", "stall", "park", "drive",
+     "emerge", "merge", "ease", "decelerate"}
+)  # fmt: skip
+
+
+#: Verbs (lemmas) of a walker: a learner who does one is on foot.
+_ON_FOOT = frozenset({"run", "walk", "step", "cross", "dash", "jog", "dart", "wander", "stroll", "hurry"})
+
+
+def _verb_after(tokens: list[str], k: int, verbs: frozenset[str]) -> bool:
+    """Whether the verb after the subject ending before ``k``, past its auxiliaries and adverbs ("had
+    already", "then"), is one of ``verbs`` in a finite form ("braked", "had eased")."""
+    while k < len(tokens) and (tokens[k] in BETWEEN or tokens[k] in ("already", "then", "quickly", "late")):
+        k += 1
+    if k >= len(tokens) or tokens[k].endswith("ing"):
+        return False
+    return bool(set(lemmas(tokens[k]).get("VERB", ())) & verbs)
 
 
 def _reporters(tokens: list[str]) -> set[str]:
@@ -1540,7 +1567,7 @@ def _frame(
     tokens = _operator_fleet(tokens, kind_at, known)
     if names_ego(tokens, kind_at, known):
         if names_ego(_story(tokens, kind_at, known), kind_at, known):
-            return tokens
+            return _role(tokens, kind_at, LEARNER)  # (the learner at the wheel of the car we are in)
         return _at_the_wheel(tokens, kind_at, known, dropped)  # (the writer only in asides)
     from vei_scenario.language.discourse import vehicle_labels
 
