@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from vei_scenario.language.outcome import stated_intent
-from vei_scenario.language.reader import _tokens
+from vei_scenario.language.reader import _tokens, read
 
 
 def _intent(text: str) -> str | None:
@@ -401,3 +401,26 @@ def test_a_person_springing_clear_is_a_near_miss(text):
 @pytest.mark.parametrize("text, intent", ESCAPED_ON_FOOT_NOT)
 def test_a_step_by_choice_or_denied_is_no_escape(text, intent):
     assert _intent(text) == intent
+
+
+#: a learner at the ego's wheel ("the candidate", "Applicant") who brakes hard or swerves after someone
+#: came into the way: the ego's escape, a near miss
+LEARNER_ESCAPES = [
+    "A rider rode across from the left against the red. The candidate braked hard.",
+    "E-scooter came off the kerb on the right. Applicant detected late, braked firmly and stopped.",
+    "Cyclist pulled out of the side road; pupil swerved and stopped.",
+]
+#: a learner brought in as someone new is no one at the ego's wheel
+LEARNER_ESCAPES_NOT = [
+    "A pupil ran out from the school gate and stopped at the kerb.",
+]
+
+
+@pytest.mark.parametrize("text", LEARNER_ESCAPES)
+def test_a_learner_drivers_escape_is_a_near_miss(text):
+    assert read(text).intent == "near_miss"
+
+
+@pytest.mark.parametrize("text", LEARNER_ESCAPES_NOT)
+def test_a_learner_brought_in_as_new_is_no_ego(text):
+    assert read(text).intent is None

@@ -36,6 +36,7 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.designed_outcome import designed_outcome
+from vei_scenario.language.ego import LEARNER
 from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.function_words import (
     CLAUSE_BREAKS,
@@ -1912,6 +1913,10 @@ _OBJECT_MARKERS = frozenset(
 )  # fmt: skip
 
 
+#: Words that bring a learner in as someone new ("a pupil", "another learner"): no one at the ego's wheel.
+_INDEFINITE_BEFORE = frozenset(("a", "an", "another", "one", "some", "other"))
+
+
 def _names_ego(words: list[str]) -> bool:
     """Whether the noun phrase ending ``words`` is the ego (not the ego as an object inside it)."""
     if not words:
@@ -1919,6 +1924,8 @@ def _names_ego(words: list[str]) -> bool:
     n = 0
     if words[-1] in _EGO_HEADS:
         n = 1
+    elif words[-1] in LEARNER and not (len(words) > 1 and words[-2] in _INDEFINITE_BEFORE):
+        n = 1  # ("the candidate", "Applicant": the learner at the ego's wheel; not "a pupil")
     else:
         tail = " ".join(words[-3:])
         phrase = next((p for p in _EGO_PHRASES if tail.endswith(p)), None)
@@ -3302,7 +3309,8 @@ def _escaped_on_foot(words: list[str], i: int) -> bool:
 def _road_user_evades(words: list[str], i: int) -> bool:
     """Whether the finite verb at ``i`` is a hard brake or a swerve ("brakes hard", "stood on the
     brakes", "swerved") whose subject, right before it, is a road user named by its noun or the ego
-    named by its vehicle ("the Tesla brakes HARD", "the bus driver slammed on", "SUT braked hard"): one
+    named by its vehicle or its learner driver ("the Tesla brakes HARD", "the bus driver slammed on",
+    "SUT braked hard", "Applicant braked firmly"): one
     party's escape from the other, whichever of the two it is. Not a participle or an infinitive
     ("a car braking hard", "to brake hard": no act said), nor one denied or under a condition
     ("the van never braked", "if the cyclist had swerved")."""
@@ -3317,7 +3325,7 @@ def _road_user_evades(words: list[str], i: int) -> bool:
     j = i - 1
     while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
         j -= 1
-    return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS)
+    return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS or words[j] in LEARNER)
 
 
 #: Verbs (lemmas) of easing off or making room for another ("slowed", "decelerated", "moved over").
