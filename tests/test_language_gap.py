@@ -117,6 +117,7 @@ def test_a_length_of_no_gap_to_the_ego_stays_none(text: str, kind: str, length: 
         ("A van tailgated me for 300 metres, then overtook.", None),
         ("An e-scooter 30 m ahead of us rode along in front for about 400 m.", 30.0),
         ("A lorry sat on my bumper for 10 seconds and then overtook.", None),
+        ("I passed the cyclist aiming for 1.5 m of clearance at 30 km/h.", 1.5),
     ],
 )
 def test_a_stretch_gone_along_is_no_gap(text, gap):

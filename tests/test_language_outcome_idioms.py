@@ -393,6 +393,21 @@ ESCAPED_ON_FOOT_NOT = [
 ]
 
 
+#: no one who had to spring clear ("Nobody had to ...", "No-one had to ..."), or a vehicle making way:
+#: no near miss, read as the whole text is read
+NO_ONE_ESCAPED = [
+    "I drove through the crossing at 20 km/h. Nobody had to jump out of the way, it was a quiet street.",
+    "No-one had to step back when the van reversed out of the drive.",
+    "The lorry had to get out of the way of the ambulance and pulled onto the hard shoulder.",
+    "Cars had to get out of the way of the fire engine at the junction.",
+]
+
+
+@pytest.mark.parametrize("text", NO_ONE_ESCAPED)
+def test_no_one_springing_clear_is_no_near_miss(text):
+    assert read(text).intent != "near_miss"
+
+
 @pytest.mark.parametrize("text", ESCAPED_ON_FOOT)
 def test_a_person_springing_clear_is_a_near_miss(text):
     assert _intent(text) == "near_miss"

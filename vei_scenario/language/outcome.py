@@ -3286,6 +3286,21 @@ _ON_FOOT_MOVES = frozenset(("jump", "leap", "dive", "step", "hop", "spring", "sc
 _AWAY = frozenset(("back", "aside", "clear", "sideways", "backwards"))
 
 
+#: Words of nobody, as one token ("no-one"), besides the negators.
+_NO_ONE = frozenset(("no-one", "noone"))
+#: Words between a subject and its move ("had to", "was forced to", "quickly").
+_TO_THE_MOVE = frozenset(("had", "has", "have", "to", "was", "were", "forced", "needed", "need", "just", "then", "all"))
+
+
+def _vehicle_subject(words: list[str], i: int) -> bool:
+    """Whether the subject right before the move at ``i`` (past "had to" and the like) is a vehicle ("the
+    lorry had to get out of the way", "cars had to"): a vehicle making way, no one on foot."""
+    j = i - 1
+    while j >= 0 and (words[j] in _TO_THE_MOVE or words[j].endswith("ly")):
+        j -= 1
+    return j >= 0 and (words[j] in _SHOVED_VEHICLES or words[j].rstrip("s") in _SHOVED_VEHICLES | {"buse", "lorrie"})
+
+
 def _out_of_the_way(after: list[str]) -> bool:
     """Whether ``after`` opens with "out of the way" or "out of its/his/her/their/my way"."""
     return after[:2] == ["out", "of"] and after[3:4] == ["way"] and after[2] in _POSSESSIVES | {"the"}
@@ -3300,6 +3315,8 @@ def _escaped_on_foot(words: list[str], i: int) -> bool:
     me through": no "had to")."""
     if not _lemmas(words[i]) & _ON_FOOT_MOVES or _denied_before(words, i) or _scoped(words, i, _UNREAL, 4):
         return False
+    if set(words[:i]) & (_NEGATORS | _NO_ONE) or _vehicle_subject(words, i):
+        return False  # ("Nobody had to step back", "without anyone having to"; "the bus had to get out of the way")
     after = words[i + 1 : i + 6]
     if _out_of_the_way(after):
         return True

@@ -970,10 +970,18 @@ _STRETCH_HEDGES = frozenset(
 )  # fmt: skip
 
 
-def a_stretch(tokens: list[str], i: int) -> bool:
-    """Whether the length at ``i`` is how far someone went, not how far apart: "for" before it with
-    only hedges between ("sat 2 m behind him for a good 200 m", "tailgated me for 300 metres"). English
-    says a stretch of road gone along as it says a time, with "for"; the gap is said apart ("2 m")."""
+#: Nouns of the room left between two, after a length ("for 1.5 m of clearance", "for a 2 m gap").
+_ROOM_LEFT = frozenset({"clearance", "gap", "space", "room", "margin", "separation", "berth", "distance"})
+
+
+def a_stretch(tokens: list[str], i: int, used: int) -> bool:
+    """Whether the length at ``i`` (``used`` tokens with its unit) is how far someone went, not how far
+    apart: "for" before it with only hedges between ("sat 2 m behind him for a good 200 m", "tailgated
+    me for 300 metres"). English says a stretch of road gone along as it says a time, with "for"; the gap
+    is said apart ("2 m"). Not a room aimed for ("aiming for 1.5 m of clearance", "for a 2 m gap")."""
+    after = tokens[i + used : i + used + 2]
+    if after[:1] and (after[0] in _ROOM_LEFT or (after[0] == "of" and after[1:] and after[1] in _ROOM_LEFT)):
+        return False
     k = i - 1
     while k >= 0 and i - k <= 4 and tokens[k] in _STRETCH_HEDGES:
         k -= 1

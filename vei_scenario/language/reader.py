@@ -1006,7 +1006,7 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
                 kind = "skip"  # ("a lateral velocity of 1 m/s", "1.5 m clearance"): across the road, no travel
             if kind == "distance" and Q.a_size(tokens, i, used):
                 kind = "skip"  # ("a pothole about a foot across"): how big a thing is, no gap
-            if kind == "distance" and Q.a_stretch(tokens, i):
+            if kind == "distance" and Q.a_stretch(tokens, i, used):
                 kind = "skip"  # ("tailgated me for a good 300 m", "for 10 seconds"): how far or long, no gap
             unit = tokens[i + 1 : i + 2] != [] and tokens[i + 1] in V.SPEED_UNITS
             owners = Q.owners(tokens, i, unit, ending_at, lambda w: _pos(w) == {"NOUN"} and w not in FUNCTION_WORDS)

@@ -569,6 +569,10 @@ def _adjective_as_noun(lower: list[str], n: int, h: int) -> bool:
     return h == n + 1 and lower[n] == "the" and lower[h].endswith("ed") and "ADJ" in pos and "VERB" in pos
 
 
+#: Pronouns that name no one ("nobody had to stop", "no-one was hurt", "anyone could have ...").
+_NO_ONE = frozenset(("nobody", "no-one", "noone", "none", "nothing", "anyone", "anybody", "anything"))
+
+
 def _unnamed_subjects(
     text: str, words: list[re.Match], lower: list[str], known: Callable[[str], bool], road_user: Callable[[str], bool]
 ) -> list[tuple[str, str, int]]:
@@ -586,6 +590,8 @@ def _unnamed_subjects(
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
             if lower[h - 1 : h + 1] in FORGONE:
                 break  # ("rather than swerve": an alternative set aside, no one's noun)
+            if lower[h] in _NO_ONE:
+                break  # ("Nobody had to step back": no one is named)
             if ("NOUN" in lemmas(lower[h]) or not english(lower[h]) or _adjective_as_noun(lower, n, h)) and (
                 lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
             ):
