@@ -439,3 +439,26 @@ def test_a_learner_drivers_escape_is_a_near_miss(text):
 @pytest.mark.parametrize("text", LEARNER_ESCAPES_NOT)
 def test_a_learner_brought_in_as_new_is_no_ego(text):
     assert read(text).intent is None
+
+
+#: a brake or stop the ego had to make for someone who came into its way: its escape, a near miss
+FORCED_FOR_ONE_IN_THE_WAY = [
+    "Turning right, a pedestrian was crossing the side road and I had to brake.",
+    "Two kids stepped out between parked cars ahead of us and we had to stop.",
+    "A lad on a scooter came down our side the wrong way and Dad had to brake.",
+]
+#: one it had to make in a queue, to let someone go, or with no one coming into its way: as before
+FORCED_NOT_FOR_ONE_IN_THE_WAY = [
+    ("A cyclist pulled out and I had to stop to let him go.", "safe"),
+    ("The car ahead braked and I had to brake too.", None),
+]
+
+
+@pytest.mark.parametrize("text", FORCED_FOR_ONE_IN_THE_WAY)
+def test_a_forced_brake_for_one_in_the_way_is_a_near_miss(text):
+    assert read(text).intent == "near_miss"
+
+
+@pytest.mark.parametrize("text, intent", FORCED_NOT_FOR_ONE_IN_THE_WAY)
+def test_a_forced_brake_for_no_one_in_the_way_is_as_before(text, intent):
+    assert read(text).intent == intent

@@ -3104,7 +3104,7 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
             elif _is_verb(w) and _compelled(words, i) and _ego_acts(words, i) == "evade":
                 add("evade")  # (anyone forced to swerve: "he had to swerve round my bonnet", "made me brake hard")
             elif _is_verb(w) and _compelled(words, i) and _forced_stop(words, i, whole[at + i + 1 :], whole):
-                add("brake")  # ("had to stop halfway", "the driver had to brake": forced on its doer, no giving way)
+                add("forced")  # ("had to stop halfway", "the driver had to brake": forced on its doer, no giving way)
             elif clause.first_of_sentence and _hortative(words, i):
                 pass  # ("Let us all take care": a wish said to the reader, no one let through)
             elif _is_verb(w) and _subject_is_ego(words, i, clause, story):
@@ -3416,6 +3416,8 @@ def decide(cues: list[Cue], sudden: bool = False, intruded: bool = False, entere
         kinds.discard("escape")
         if entered:
             kinds.add("evade")
+    if "forced" in kinds:  # (a brake or stop someone had to make: the escape from one who came into the way)
+        kinds = (kinds - {"forced"}) | ({"evade"} if entered and not kinds & {"safe", "yield"} else {"brake"})
     if "critical" in kinds and "contact" not in kinds:
         return CRITICAL  # (a test's own rating of its scenario, over what its wording suggests)
     if "room" in kinds:  # (a stop with several metres left: room to spare, unless it was an emergency)
