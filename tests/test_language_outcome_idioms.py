@@ -12,6 +12,7 @@ import pytest
 
 from vei_scenario.language.outcome import stated_intent
 from vei_scenario.language.reader import _tokens, read
+from vei_scenario.language.reading import NotUnderstood
 
 
 def _intent(text: str) -> str | None:
@@ -462,3 +463,17 @@ def test_a_forced_brake_for_one_in_the_way_is_a_near_miss(text):
 @pytest.mark.parametrize("text, intent", FORCED_NOT_FOR_ONE_IN_THE_WAY)
 def test_a_forced_brake_for_no_one_in_the_way_is_as_before(text, intent):
     assert read(text).intent == intent
+
+
+#: a text whose only "someone" is nobody ("Nobody ...", "At no point did anyone ...") names no road user
+#: at all, and is refused as such, not read with someone on foot who sprang clear
+NO_ROAD_USER_AT_ALL = [
+    "Nobody had to step back, the crossing was clear.",
+    "At no point did anyone have to jump out of the way, the street was empty.",
+]
+
+
+@pytest.mark.parametrize("text", NO_ROAD_USER_AT_ALL)
+def test_nobody_is_no_road_user(text):
+    with pytest.raises(NotUnderstood, match="no road user"):
+        read(text)

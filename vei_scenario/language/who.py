@@ -590,8 +590,8 @@ def _unnamed_subjects(
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
             if lower[h - 1 : h + 1] in FORGONE:
                 break  # ("rather than swerve": an alternative set aside, no one's noun)
-            if lower[h] in _NO_ONE:
-                break  # ("Nobody had to step back": no one is named)
+            if lower[h] in _NO_ONE or lower[h] == "no":
+                break  # ("Nobody had to step back", "At no point did anyone ...": no one is named)
             if ("NOUN" in lemmas(lower[h]) or not english(lower[h]) or _adjective_as_noun(lower, n, h)) and (
                 lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
             ):
