@@ -101,7 +101,7 @@ def _quantity_at(tokens: list[str], j: int) -> int:
 
 
 def _beside_a_quantity(tokens: list[str], out: list[str], end: int) -> bool:
-    """Whether the comment from ``k`` to ``end`` stands mid-sentence right before a quantity ("fast, I'd
+    """Whether the comment ending before ``end`` stands mid-sentence right before a quantity ("fast, I'd
     say 25 km/h") or right after one and ends its phrase ("at 70 km/h I'd say."); ``out`` holds the
     words kept before it."""
     before = [w for w in out[-3:] if w != ","]

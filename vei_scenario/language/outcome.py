@@ -3286,8 +3286,6 @@ _ON_FOOT_MOVES = frozenset(("jump", "leap", "dive", "step", "hop", "spring", "sc
 _AWAY = frozenset(("back", "aside", "clear", "sideways", "backwards"))
 
 
-#: Words of nobody, as one token ("no-one"), besides the negators.
-_NO_ONE = frozenset(("no-one", "noone"))
 #: Words between a subject and its move ("had to", "was forced to", "quickly").
 _TO_THE_MOVE = frozenset(("had", "has", "have", "to", "was", "were", "forced", "needed", "need", "just", "then", "all"))
 
@@ -3298,7 +3296,7 @@ def _vehicle_subject(words: list[str], i: int) -> bool:
     j = i - 1
     while j >= 0 and (words[j] in _TO_THE_MOVE or words[j].endswith("ly")):
         j -= 1
-    return j >= 0 and (words[j] in _SHOVED_VEHICLES or words[j].rstrip("s") in _SHOVED_VEHICLES | {"buse", "lorrie"})
+    return j >= 0 and (words[j] in _SHOVED_VEHICLES or bool(_lemmas(words[j]) & _SHOVED_VEHICLES))
 
 
 def _out_of_the_way(after: list[str]) -> bool:
@@ -3315,7 +3313,7 @@ def _escaped_on_foot(words: list[str], i: int) -> bool:
     me through": no "had to")."""
     if not _lemmas(words[i]) & _ON_FOOT_MOVES or _denied_before(words, i) or _scoped(words, i, _UNREAL, 4):
         return False
-    if set(words[:i]) & (_NEGATORS | _NO_ONE) or _vehicle_subject(words, i):
+    if set(words[:i]) & (_NEGATORS | _NOBODY) or _vehicle_subject(words, i):
         return False  # ("Nobody had to step back", "without anyone having to"; "the bus had to get out of the way")
     after = words[i + 1 : i + 6]
     if _out_of_the_way(after):
@@ -3327,8 +3325,8 @@ def _road_user_evades(words: list[str], i: int) -> bool:
     """Whether the finite verb at ``i`` is a hard brake or a swerve ("brakes hard", "stood on the
     brakes", "swerved") whose subject, right before it, is a road user named by its noun or the ego
     named by its vehicle or its learner driver ("the Tesla brakes HARD", "the bus driver slammed on",
-    "SUT braked hard", "Applicant braked firmly"): one
-    party's escape from the other, whichever of the two it is. Not a participle or an infinitive
+    "SUT braked hard", "Applicant braked firmly"): one party's escape from the other, whichever of the
+    two it is. Not a participle or an infinitive
     ("a car braking hard", "to brake hard": no act said), nor one denied or under a condition
     ("the van never braked", "if the cyclist had swerved")."""
     if words[i].endswith("ing") or words[i - 1 : i] == ["to"] or _denied_before(words, i):

@@ -3308,7 +3308,7 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
     return [p for p in pending if all(p is not x for x in mine)]
 
 
-def _walkers_do_not_turn(pending: list, who, r: Reading, link: str, added: list) -> list:
+def _walkers_do_not_turn(pending: list, who: _Actor | str, r: Reading, link: str, added: list) -> list:
     """``pending`` with a participle of turning that opened the sentence put on the ego when the subject
     its comma leads to is a walker ("Turning right into Elm Grove, a man was already crossing the side
     road"): a walker turns into no road, so the participle dangles, as notes let it, from the writer

@@ -570,7 +570,7 @@ def _adjective_as_noun(lower: list[str], n: int, h: int) -> bool:
 
 
 #: Pronouns that name no one ("nobody had to stop", "no-one was hurt", "anyone could have ...").
-_NO_ONE = frozenset(("nobody", "no-one", "noone", "none", "nothing", "anyone", "anybody", "anything"))
+_NOBODY = frozenset(("nobody", "no-one", "noone", "none", "nothing", "anyone", "anybody", "anything"))
 
 
 def _unnamed_subjects(
@@ -590,7 +590,7 @@ def _unnamed_subjects(
                 break  # (a road user's thing, "a bike rack", "the rider manual"; or a phrase the reader has)
             if lower[h - 1 : h + 1] in FORGONE:
                 break  # ("rather than swerve": an alternative set aside, no one's noun)
-            if lower[h] in _NO_ONE or lower[h] == "no":
+            if lower[h] in _NOBODY or lower[h] == "no":
                 break  # ("Nobody had to step back", "At no point did anyone ...": no one is named)
             if ("NOUN" in lemmas(lower[h]) or not english(lower[h]) or _adjective_as_noun(lower, n, h)) and (
                 lower[h + 1] in DESCRIBING or _verb_word(lower[h + 1])
