@@ -26,7 +26,7 @@ from collections.abc import Callable
 from functools import lru_cache
 
 from vei_scenario.language.lemmas import lemmas
-from vei_scenario.language.vocabulary import GENDERED, IN_LINE
+from vei_scenario.language.vocabulary import GENDERED, IN_LINE, LEARNER
 from vei_scenario.language.vocabulary import PARTY as FAMILY
 
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
@@ -54,8 +54,6 @@ BOARDING = frozenset({"get", "climb", "jump", "hop", "pile", "sit"})
 CONTACT = frozenset({"hit", "strike", "collide", "clip", "knock", "plough", "mow", "crash"})
 #: Words of driving a vehicle, after the person at its wheel ("Dave, who's driving a bin lorry").
 DRIVING = frozenset({"driving", "drives", "drove", "driven"})
-#: Roles of the person a driving lesson is about: at a road speed or at a wheel, that person drives.
-LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "cand", "applicant", "student"})
 #: Roles of the party a claim is made for: always the one the statement is told for.
 PARTY = frozenset({"client", "claimant", "insured", "policyholder", "complainant"})
 #: Roles of the person a report is taken from ("Cust states ...", "RP traveling 65 mph", "Caller was

@@ -36,7 +36,6 @@ from vei_scenario.language import vocabulary as V
 from vei_scenario.language.braking_sounds import braking_sound
 from vei_scenario.language.clauses import split
 from vei_scenario.language.designed_outcome import designed_outcome
-from vei_scenario.language.ego import LEARNER
 from vei_scenario.language.elided_verb import elliptical_negation
 from vei_scenario.language.function_words import (
     CLAUSE_BREAKS,
@@ -1924,7 +1923,7 @@ def _names_ego(words: list[str]) -> bool:
     n = 0
     if words[-1] in _EGO_HEADS:
         n = 1
-    elif words[-1] in LEARNER and not (len(words) > 1 and words[-2] in _INDEFINITE_BEFORE):
+    elif words[-1] in V.LEARNER and not (len(words) > 1 and words[-2] in _INDEFINITE_BEFORE):
         n = 1  # ("the candidate", "Applicant": the learner at the ego's wheel; not "a pupil")
     else:
         tail = " ".join(words[-3:])
@@ -3340,7 +3339,7 @@ def _road_user_evades(words: list[str], i: int) -> bool:
     j = i - 1
     while j >= 0 and (words[j] in _BETWEEN or words[j].endswith("ly")):
         j -= 1
-    return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS or words[j] in LEARNER)
+    return j >= 0 and (_road_user_word(words[j]) or words[j] in _EGO_NOUN_HEADS or words[j] in V.LEARNER)
 
 
 #: Verbs (lemmas) of easing off or making room for another ("slowed", "decelerated", "moved over").

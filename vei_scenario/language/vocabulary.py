@@ -338,6 +338,10 @@ SPEED_WORDS = {
     "at low speed": 0.65,
 }
 
+#: Roles of the person a driving lesson or test is about ("the pupil", "cand", "applicant"): at a road
+#: speed or at a vehicle's controls, that person drives the ego.
+LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "cand", "applicant", "student"})
+
 #: The people of a narrator's own party, by what the narrator calls them ("Dad", "my husband", "Mum"): a
 #: closed class. One of them at the wheel, in a story told from inside the car, drives the ego.
 PARTY = frozenset(
