@@ -3285,8 +3285,9 @@ _ON_FOOT_MOVES = frozenset(("jump", "leap", "dive", "step", "hop", "spring", "sc
 _AWAY = frozenset(("back", "aside", "clear", "sideways", "backwards"))
 
 
-#: Words between a subject and its move ("had to", "was forced to", "quickly").
-_TO_THE_MOVE = frozenset(("had", "has", "have", "to", "was", "were", "forced", "needed", "need", "just", "then", "all"))
+#: Words between a subject and its move ("had to", "was forced to", "all had to"): the auxiliaries and
+#: adverbs a subject and its verb take (:data:`_BETWEEN`), and a forced or shared move's own.
+_TO_THE_MOVE = _BETWEEN | {"forced", "all"}
 
 
 def _vehicle_subject(words: list[str], i: int) -> bool:

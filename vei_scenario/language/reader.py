@@ -2825,9 +2825,7 @@ def _read(text: str) -> Reading:
         if not named and subject is None and any(p.slot in ("turn", "ego_verb") for p in pending):
             # "Turning left at the junction in the afternoon; a cyclist ...": a sentence that names nobody,
             # before anyone is named, is the narrator's
-            for p in [p for p in pending if p.slot in ("turn", "ego_verb")]:
-                _apply(p, "ego", r, link, added)
-            pending = [p for p in pending if p.slot not in ("turn", "ego_verb")]
+            pending = _given_to_the_ego(pending, [p for p in pending if p.slot in ("turn", "ego_verb")], r, link, added)
         for x in joined:
             x.group = None
         joined = []
@@ -3303,6 +3301,11 @@ def _left_out_subjects_acts(pending: list, prev, r: Reading, link: str, added: l
         and p.end <= prev.start
         and (not p.words.split()[0].endswith("ing") or p.slot == "turn")
     ]
+    return _given_to_the_ego(pending, mine, r, link, added)
+
+
+def _given_to_the_ego(pending: list, mine: list, r: Reading, link: str, added: list) -> list:
+    """``pending`` less the mentions in ``mine``, each applied to the ego."""
     for p in mine:
         _apply(p, "ego", r, link, added)
     return [p for p in pending if all(p is not x for x in mine)]
@@ -3317,9 +3320,7 @@ def _walkers_do_not_turn(pending: list, who: _Actor | str, r: Reading, link: str
     if not isinstance(who, _Actor) or who.kind != "pedestrian":
         return pending
     mine = [p for p in pending if p.slot == "turn" and p.words.split()[0].endswith("ing")]
-    for p in mine:
-        _apply(p, "ego", r, link, added)
-    return [p for p in pending if all(p is not x for x in mine)]
+    return _given_to_the_ego(pending, mine, r, link, added)
 
 
 def _ahead_first(a: _Actor) -> bool:
