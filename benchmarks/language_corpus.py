@@ -115,6 +115,8 @@ FIRST = {
     "language_independent_z62.json": ((50, 50, 11, 43), "measured when written"),
     "language_independent_z63.json": ((50, 50, 1, 48), "measured when written"),
     "language_independent_z64.json": ((50, 50, 6, 41), "measured when written"),
+    "language_independent_z65.json": ((48, 48, 6, 43), "measured when written"),
+    "language_independent_z66.json": ((48, 48, 3, 42), "measured when written"),
 }
 
 
