@@ -48,8 +48,49 @@ def _kinds(text: str) -> list[str]:
             "[10:02] Driver: Seventy, it's a seventy road.",
             70,
         ),
+        (
+            "BY MR. ABRAMS:\nQ. How fast were you going?\nA. Thirty. Thirty-five at the most.\n"
+            "Q. Then what happened?\nA. She swerved round a pothole into my lane on her e-scooter.",
+            30,
+        ),
+        (
+            "THE COURT: Ms. Lindqvist, your speed?\nMS. LINDQVIST: Twenty-five, Your Honor.\n"
+            "THE COURT: And the pedestrian stepped off on your left.",
+            25 * 1.609344,  # (a bare 25 is a limit only mph signs: 25 mph)
+        ),
+        (
+            "THE COURT: Thank you. Officer Ruiz, your speed?\nOFFICER RUIZ: Forty, sir.\n"
+            "THE COURT: And the scooter came off the curb in front of you.",
+            40 * 1.609344,  # (a curb: an American road, where a bare speed is in mph)
+        ),
+        (
+            "MS DOYLE: Speed?\nA. Twenty-ish. No more.\nMS DOYLE: What did you see?\n"
+            "A. An e-scooter came across from my left, through the red.",
+            20,
+        ),
+        (
+            "MS FRY: You were following a cyclist. How far behind?\nA. Four or five metres.\n"
+            "MS FRY: Four or five metres. At what speed?\nA. Fifteen.\nMS FRY: And then he stopped.",
+            15,
+        ),
+        (
+            "DC Smith: You were on the M25 when the lorry pushed a Mini into the barrier.\n"
+            "DC Smith: What speed were you doing?\nSuspect: 90 kilometres. The truck is limited.",
+            90,
+        ),
     ],
-    ids=["question-mark-answer", "figures", "same-line-range", "your-speed"],
+    ids=[
+        "question-mark-answer",
+        "figures",
+        "same-line-range",
+        "your-speed",
+        "deposition-q-and-a",
+        "put-to-a-name",
+        "put-to-a-name-after-a-sentence",
+        "a-question-of-its-own",
+        "at-what-speed",
+        "a-length-per-hour",
+    ],
 )
 def test_the_answer_to_a_question_of_the_callers_speed_is_their_speed(text, kph):
     assert _ego(text) == pytest.approx(kph * KPH, abs=0.05)
@@ -76,6 +117,17 @@ def test_the_answer_to_a_question_of_the_callers_speed_is_their_speed(text, kph)
         "Officer: What speed were you doing, and how old are you?\nMe: 17, sir. A cyclist came out and I hit him.",
         "CT: How fast were you going?\nC: 40 miles, from Leeds, we'd been driving. A van cut in.",
         "CT: How fast were you going?\nC: Yeah, 5 or so minutes ago. A van cut in.",
+        # a question of its own about another road user; a question told by a speaker
+        "Q. A van cut in front of you. And the van, how fast?\nA. 40.",
+        "Driver: A van cut in. The cop asked, how fast were you going?\nCop: 55.",
+        "Caller: A motorbike flew past me on the inside and hit a pedestrian.\nCT: How fast?\nCaller: 100 at least.",
+        "Q. A van cut in. And the van? How fast?\nA. 40.",
+        # asked with a question of how far; a question on a line of its own with no speaker
+        "CT: A van hit me on the ring road. How far from the exit? How fast?\nC: 3 miles.",
+        "Other vehicle: white van, cut in from the left.\nSpeed?\nEstimate: 40.",
+        # words before the question that name no one it is put to; a list's items, not a deposition's answers
+        "Driver: A van cut in. Then He Asked, how fast were you going?\nCop: 55.",
+        "A van cut in front of the ego. Note: At what speed?\na. 30 km/h\nb. 50 km/h",
     ],
     ids=[
         "his-speed",
@@ -90,6 +142,14 @@ def test_the_answer_to_a_question_of_the_callers_speed_is_their_speed(text, kph)
         "two-questions",
         "a-distance",
         "a-time",
+        "anothers-of-its-own",
+        "told-with-a-comma",
+        "of-its-own-after-a-road-user",
+        "of-its-own-after-its-noun",
+        "with-how-far",
+        "no-speakers-turn",
+        "capitals-of-a-clause",
+        "a-list",
     ],
 )
 def test_no_answer_of_the_callers_speed_reads_none(text):

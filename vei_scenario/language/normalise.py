@@ -23,6 +23,7 @@ from vei_scenario.language import spoken_lengths
 from vei_scenario.language.function_words import BE, CLAUSE_BREAKS, DETERMINERS, PHRASE_ENDS
 from vei_scenario.language.imperative import imperative_as_ego
 from vei_scenario.language.lemmas import english, lemmas
+from vei_scenario.language.lettered_parties import lettered_parties
 from vei_scenario.language.located_first import said_in_order
 
 _ONES = {
@@ -486,11 +487,13 @@ _FOOT_M, _YARD_M = 0.3048, 0.9144
 _LENGTHS = re.compile(r"(\d+(?:\.\d+)?)\s*(feet|foot|ft|yards?|yds?)\b(?! (?:per|a) second)")
 #: "1930 hrs", "0750h": a four-digit clock; "6pm", "3 in the afternoon", "9 at night": the hour said.
 _FOUR_DIGIT_CLOCK = re.compile(r"\b([01]\d|2[0-3])([0-5]\d)\s*(?:hrs|hours|h)\b")
-#: "18h30", "7h15", and "8h" after a word of when ("around 8h", "at 22h"): the clock as much of Europe writes
-#: it; a bare "3h" after anything else ("a 3h drive", "for 2h") is a duration.
+#: "18h30", "7h15", "17u05" (as the Dutch write it), and "8h" after a word of when, a form's field of time or a
+#: date ("around 8h", "at 22h", "Time: 14h", "12/12/2023 14h"): the clock as much of Europe writes it; a bare
+#: "3h" after anything else ("a 3h drive", "for 2h", "travel time: 2h", "3h after I left") is a duration.
 _CLOCK_WITH_H = re.compile(
-    r"\b([01]?\d|2[0-3])h([0-5]\d)\b|\b((?:at|around|about|approx|approximately|towards|toward|by|circa) )"
-    r"([01]?\d|2[0-3])h\b"
+    r"\b([01]?\d|2[0-3])[hu]([0-5]\d)\b|((?:\b(?:at|around|about|approx|approximately|towards|toward|by|circa)"
+    r"|(?<![a-z] )\btime:|\b\d{1,2}[/.-]\d{1,2}[/.-]\d{2,4}) )([01]?\d|2[0-3])h\b"
+    r"(?! (?:after|later|before|ago|into|of|drive|trip|journey|walk|ride|away|long)\b)"
 )
 
 
@@ -1052,18 +1055,36 @@ _FALLEN_FROM = re.compile(
 
 
 #: A question of how fast the one asked was going ("How fast were you going?", "What speed were you
-#: doing?", "And your speed?"), to the end of its question mark.
+#: doing?", "And your speed?", "Ms Lee, your speed?"), to the end of its question mark; or one that names
+#: nobody, asked as a question of its own (group ``bare``: "Speed?", "At what speed?", "How fast?"), which
+#: in a transcript's turn is put to the one who answers unless a road user was just named.
 _SPEED_QUESTION = re.compile(
-    r"\b(?:how\s+(?:fast|quick(?:ly)?)\s+(?:were|was|are|r)\s+(?:you|u|ya)\b|what\s+speed\s+(?:were|was|are|did)\s+"
-    r"(?:you|u)\b|what\s+was\s+(?:your|ur)\s+speed\b)[^?\n]*\?|(?:^|(?<=[:.?!])|\band\b)\s*(?:your|ur)\s+speed\s*\?",
+    r"\b(?:how\s+(?:fast|quick(?:ly)?)\s+(?:were|was|are|r)\s+(?:you|u|ya)\b|(?:at\s+)?what\s+speed\s+(?:were|was|are|did)\s+"
+    r"(?:you|u)\b|what\s+was\s+(?:your|ur)\s+speed\b)[^?\n]*\?|(?:^|(?<=[:.?!,])|\band\b)[ \t]*(?:your|ur)\s+speed\s*\?"
+    r"|(?P<bare>(?:^|(?<=[:.?!]))[ \t]*(?:(?:and\s+)?(?:at\s+what\s+)?speed|(?:and\s+)?how\s+fast)\s*\?)",
     re.IGNORECASE | re.MULTILINE,
 )
 #: A second question asked with the first ("What speed were you doing, and how old are you?"): the answer
 #: may be to either.
 _SECOND_QUESTION = re.compile(r"\band\s+(?:how|what|where|when|who|why|did|do|were|was|are|is|have|had)\b", re.I)
+#: ... or just before it, of something a number may also answer ("How far from the exit? How fast?").
+_OTHER_QUESTION = re.compile(r"\b(?:how\s+(?:far|long|old|many|much)|where|when|what\s+time|distance)\b[^?]*\?", re.I)
 #: A speaker's label opening a turn of a transcript ("C:", "Caller:", "A:", "[15:42] Driver:", "Call taker:"):
 #: one to three words.
 _TURN_LABEL = re.compile(r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:[ \t]*", re.I)
+#: ... or, in a deposition or a cross-examination (a text with a line opening "Q.", or lines opening "A." and
+#: none "B."), its "Q." and "A." too (elsewhere "a." opens a list's item).
+_DEPOSITION_LABEL = re.compile(
+    r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?(?:[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:|[qa]\.(?=[ \t]))[ \t]*", re.I
+)
+_LINE_OPENING = re.compile(r"^[ \t]*([qab])\.[ \t]", re.I | re.MULTILINE)
+#: Whom a question is put to, right before it, after the turn's other sentences ("Thank you. Ms. Lindqvist,
+#: your speed?", "Officer Murray, how fast were you going?"): a title and a name, or a name of one or two
+#: capitalised words, and a comma; not a clause that tells the question ("The cop asked, how fast ...").
+_VOCATIVE = re.compile(
+    r"(?:^|[.?!][ \t]+)(?:(?i:mr|mrs|ms|miss|mx|dr|sir|madam|officer|constable|sergeant|sgt|inspector|detective|"
+    r"witness)\.?(?: [A-Z][A-Za-z'-]+){0,2}|[A-Z][a-z'-]+(?: [A-Z][a-z'-]+)?),$"
+)
 #: The first number of an answer, in figures or words.
 _ANSWER_NUMBER = re.compile(rf"\b(\d+(?:\.\d+)?|{_NUMBER_SAID})\b", re.IGNORECASE)
 #: What may stand in an answer before its number: fillers, hedges and a yes or no ("Um, maybe thirty",
@@ -1074,10 +1095,13 @@ _ANSWER_FILLERS = frozenset(
     "only just not fast slow slowly very really quite i think reckon guess dunno don't do know sure say god "
     "sorry honestly uh-huh".split()
 )
+#: A unit of length after an answer's number, ending the phrase ("90 kilometres.", "40 miles?"): the speed
+#: asked for in that unit per hour.
+_ANSWER_LENGTH_UNIT = re.compile(r"\s*(miles|kilomet(?:er|re)s|km)(?=\s*(?:[.!?;]|$))", re.IGNORECASE | re.MULTILINE)
 #: What may follow an answer's number: its end, a mark, a unit of speed, a range's second number or a hedge.
 _ANSWER_ENDS = re.compile(
     rf"\s*(?:[.,?!;)]|$|-|(?:mph|km/h|kph|kmh|ks?|tops|max|maximum|ish|maybe|probably|at\s+most|at\s+least|odd|"
-    rf"plus|i\s+think|i\s+reckon)\b|(?:or|to)\s+(?:\d|{_NUMBER_WORD}))",
+    rf"plus|i\s+think|i\s+reckon)\b|(?:or|to)\s+(?:\d|{_NUMBER_WORD})|{_ANSWER_LENGTH_UNIT.pattern})",
     re.IGNORECASE,
 )
 
@@ -1086,36 +1110,49 @@ _ANSWER_ENDS = re.compile(
 ANSWER_SAID = "i was doing "
 
 
-def _the_answer(text: str, q: re.Match) -> int | None:
-    """Where the answer to the question ``q`` starts: after the label of the next speaker's turn, on
-    the same line or the next; None where the question is not itself a labelled turn (a question told
-    in a story: "I asked the rider: how fast were you going?") or no turn follows."""
+def _the_answer(text: str, q: re.Match, labels: re.Pattern, known_noun) -> int | None:
+    """Where the answer to the question ``q`` starts: after the label (``labels``) of the next speaker's
+    turn, on the same line or the next; None where the question is not itself a labelled turn (a question
+    told in a story: "I asked the rider: how fast were you going?"), is asked with another ("How far? How
+    fast?"), asks without "you" just after a road user is named ("A motorbike flew past. / CT: How
+    fast?", "And the van? Speed?": that one's speed), or no turn follows."""
     line_start = text.rfind("\n", 0, q.start()) + 1
-    own = _TURN_LABEL.match(text, line_start)
-    if own is None or own.end() > q.start() or _SECOND_QUESTION.search(q.group(0)):
+    own = labels.match(text, line_start)
+    begins = q.start() + len(q.group(0)) - len(q.group(0).lstrip())
+    if own is None or own.end() > begins or _SECOND_QUESTION.search(q.group(0)):
         return None
-    asked = text[own.end() : q.start()].rstrip().lower()
-    if asked and not asked.endswith((".", "?", "!", "and", "ok", "okay", "so", "right")):
-        return None  # ("Driver: The cop asked how fast were you going?": a question told, not asked)
-    label = _TURN_LABEL.match(text, q.end())
+    asked = text[own.end() : begins].rstrip()
+    if _OTHER_QUESTION.search(asked):
+        return None
+    if asked and not asked.lower().endswith((".", "?", "!", "and", "ok", "okay", "so", "right")):
+        if not _VOCATIVE.search(asked):
+            return None  # ("Driver: The cop asked how fast were you going?": a question told, not asked)
+    if q.group("bare"):
+        said_before = text[text.rfind("\n", 0, max(line_start - 1, 0)) + 1 : begins]
+        if known_noun(said_before.lower()):
+            return None
+    label = labels.match(text, q.end())
     if label is None:
         line_end = text.find("\n", q.end())
         if line_end < 0 or text[q.end() : line_end].strip():
             return None
-        label = _TURN_LABEL.match(text, line_end + 1)
+        label = labels.match(text, line_end + 1)
     return None if label is None else label.end()
 
 
-def speed_answered(text: str) -> str:
+def speed_answered(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` with the answer to a question of the one asked's speed said as a speed ("CT: How fast were
     you going? / C: Twenty? Not even. Twenty.": "C: i was doing Twenty, Not even. ..."; "Q: What speed
     were you doing? A: 30, about."). Why: in a transcript of a call, an interview or a cross-examination
     the speed is the answer's first number, said bare, with no verb before it. Only a number that opens
     the answer (past fillers and hedges) and ends its phrase (a mark, a unit of speed, a range, a hedge)
-    is one: "I'm 82", "the limit is 30", "3 cars ahead" are left as said."""
+    is one: "I'm 82", "the limit is 30", "3 cars ahead" are left as said. ``known_noun(phrase)``: the
+    road-user noun a phrase ends in, or None."""
     out, at = [], 0
+    openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
+    labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
     for q in _SPEED_QUESTION.finditer(text):
-        start = _the_answer(text, q) if q.start() >= at else None
+        start = _the_answer(text, q, labels, known_noun) if q.start() >= at else None
         if start is None:
             continue
         answer = text[start : start + 80].split("\n")[0]
@@ -1127,6 +1164,10 @@ def speed_answered(text: str) -> str:
             continue
         out += [text[at : start + number.start()], ANSWER_SAID, number.group(0)]
         at = start + number.end()
+        unit = _ANSWER_LENGTH_UNIT.match(text, at)
+        if unit is not None:  # ("90 kilometres.": a speed's unit said short, as its length)
+            out.append(" mph" if unit.group(1).lower() == "miles" else " km/h")
+            at = unit.end()
         if text.startswith("?", at):  # ("Twenty? Not even.": a guess said as a question, still the answer)
             out.append(",")
             at += 1
@@ -1203,6 +1244,7 @@ def normalise(text: str, known_noun=lambda phrase: None) -> str:
     way the reader reads them. ``known_noun(phrase)`` returns the road-user noun a phrase ends in,
     or None."""
     text = _heavy_vehicles(text)
+    text = lettered_parties(text, known_noun)  # ("Vehicle B: Transit van ... B reversed": the van reversed)
     text = _DESCRIBED_CAMERA_CAR.sub(_camera_car, text)  # ("the speed camera car": a car of its own)
     text = _CAMERA_CAR_FROM_ME.sub(r"\1", text)  # ("the camera car in front of me": not the one I drive)
     text = imperative_as_ego(text)  # ("Follow a decelerating van": we follow it)

@@ -1979,7 +1979,7 @@ def read(text: str) -> Reading:
     the noun is listed as not used."""
     text = plain_letters(text)  # ("piéton", "Fußgänger": the reader's words are plain letters)
     text = filled_outline(text)  # ("at <v_ego> km/h ... Examples: | v_ego | / | 70 |": at 70 km/h)
-    answered = speed_answered(text)  # ("How fast were you going? / C: Twenty.": said as the caller's speed)
+    answered = speed_answered(text, _actor_noun_in)  # ("How fast were you going? / C: Twenty.": the caller's speed)
     reading = _read_answered(answered)
     if reading is not None and answered != text:  # (the words put in to say the answer are no words of the text)
         written = set(re.findall(r"[a-z]+", text.lower()))
