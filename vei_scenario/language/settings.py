@@ -692,11 +692,14 @@ def sunny(said: str) -> str | None:
 _DOTTED_CLOCK = re.compile(r"\b(1[0-2]|0?[1-9])\.([0-5]\d) (am|pm)\b")
 
 
-#: A clock written with a dot after a word of time and no unit ("at 23.10", "approx 3.15,"): the hour
-#: as written, which a part of the day said beside it may put in the afternoon (:func:`twelve_hour`).
+#: A clock written with a dot after a word of time or a form's field of time and no unit ("at 23.10", "approx
+#: 3.15,", "Time: 13.15", "21.09.2023 time 14.10"): the hour as written, which a part of the day said beside
+#: it may put in the afternoon (:func:`twelve_hour`). Not a date ("Time: 10.01.2024"), nor a time of something
+#: ("lap time 1.45", "reaction time: 1.50").
 _DOTTED_AT = re.compile(
-    r"\b(?:at|around|about|approx|approximately|circa|by|~) ([01]?\d|2[0-3])\.([0-5]\d)\b"
-    r"(?! ?(?:m|metres?|meters?|km|km/h|kph|mph|m/s|s|seconds?|miles?|feet|ft|%)\b)"
+    r"(?:\b(?:at|around|about|approx|approximately|circa|by|~)|(?<![a-z] )\btime ?:|(?<=\d )time) "
+    r"([01]?\d|2[0-3])\.([0-5]\d)\b(?! ?\. ?\d{2}(?:\d{2})?\b)"
+    r"(?! ?(?:m|metres?|meters?|km|km/h|kph|mph|m/s|s|seconds?|min|mins|minutes?|h|hrs?|hours?|miles?|feet|ft|%)\b)"
 )
 
 
