@@ -131,6 +131,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z62.json": (50, 11),
     ROOT / "tests" / "data" / "language_independent_z63.json": (50, 1),
     ROOT / "tests" / "data" / "language_independent_z64.json": (50, 6),
+    ROOT / "tests" / "data" / "language_independent_z65.json": (48, 6),
+    ROOT / "tests" / "data" / "language_independent_z66.json": (48, 4),
 }
 
 
