@@ -74,6 +74,11 @@ def _kinds(text: str) -> list[str]:
             15,
         ),
         (
+            "Officer: Where were you?\nDriver: On Mill Road, heading into town.\nOfficer: Speed?\n"
+            "Driver: 30. Then a kid on an e-scooter shot out in front of me.",
+            30,
+        ),
+        (
             "DC Smith: You were on the M25 when the lorry pushed a Mini into the barrier.\n"
             "DC Smith: What speed were you doing?\nSuspect: 90 kilometres. The truck is limited.",
             90,
@@ -89,6 +94,7 @@ def _kinds(text: str) -> list[str]:
         "put-to-a-name-after-a-sentence",
         "a-question-of-its-own",
         "at-what-speed",
+        "speakers-labels-name-no-one",
         "a-length-per-hour",
     ],
 )

@@ -1127,9 +1127,9 @@ def _the_answer(text: str, q: re.Match, labels: re.Pattern, known_noun) -> int |
     if asked and not asked.lower().endswith((".", "?", "!", "and", "ok", "okay", "so", "right")):
         if not _VOCATIVE.search(asked):
             return None  # ("Driver: The cop asked how fast were you going?": a question told, not asked)
-    if q.group("bare"):
-        said_before = text[text.rfind("\n", 0, max(line_start - 1, 0)) + 1 : begins]
-        if known_noun(said_before.lower()):
+    if q.group("bare"):  # (what was said on this line and the one before, past the speakers' labels)
+        said_before = text[text.rfind("\n", 0, max(line_start - 1, 0)) + 1 : begins].split("\n")
+        if any(known_noun(line[(m.end() if (m := labels.match(line)) else 0) :].lower()) for line in said_before):
             return None
     label = labels.match(text, q.end())
     if label is None:
