@@ -56,7 +56,7 @@ from vei_scenario.language.function_words import (  # noqa: F401  (re-exported: 
 from vei_scenario.language.lemmas import english, lemmas
 from vei_scenario.language.lexicon import ANIMALS, MOTOR_TWO_WHEELERS, WALKER_PACED, WRONG_WAY_NOUNS
 from vei_scenario.language.scenery import absent, vehicle_modifiers
-from vei_scenario.language.vocabulary import IN_LINE
+from vei_scenario.language.vocabulary import GENERAL_VEHICLE, IN_LINE
 from vei_scenario.language.who import (
     THINGS_FOR_VEHICLES,
     TRAVEL_VERBS,
@@ -83,8 +83,6 @@ VEHICLES = frozenset({"car", "van", "truck"})
 VULNERABLE = frozenset({"pedestrian", "bicycle", "e-scooter"})
 #: The words a report sets two parties against each other with ("car versus e-scooter").
 VERSUS = frozenset({"versus", "vs", "v"})
-#: Nouns that name any vehicle: a definite one of them is the most recent vehicle named.
-GENERAL_VEHICLE = frozenset({"vehicle", "vehicles"})
 #: The plain noun the reader reads for each type, to say a referent again as the reader reads it.
 NOUN = {"car": "car", "van": "van", "truck": "truck", "bicycle": "cyclist", "e-scooter": "e-scooter",
         "pedestrian": "pedestrian"}  # fmt: skip

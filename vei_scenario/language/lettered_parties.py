@@ -21,6 +21,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from vei_scenario.language.vocabulary import GENERAL_VEHICLE
+
 #: A party's label opening a line (or after a dash that ends its heading): its letter, after a word of the
 #: form's for a vehicle, a driver or the boxes ticked, in the languages of the form, before a colon or an
 #: equals sign, with an aside in brackets between ("A (me, Citroen C3): 6", "Circumstances B: 17").
@@ -43,22 +45,19 @@ _NOT_A_PARTY = frozenset(
 )
 
 
-def _line_of(text: str, m: re.Match) -> str:
+def _after_letter(text: str, m: re.Match) -> str:
+    """What label ``m``'s line says after its letter (its aside too: "(me, Citroen C3): 6")."""
     end = text.find("\n", m.end())
-    return text[m.start() : end if end >= 0 else len(text)]
-
-
-#: What a party's line may say of it that names no road user of its own: a vehicle in general, or none
-#: ("no vehicle, it is an e-scooter").
-_GENERAL = frozenset({"vehicle", "vehicles", "veh"})
+    return text[m.end("letter") : end if end >= 0 else len(text)]
 
 
 def _party_noun(line: str, known_noun: Callable[[str], str | None]) -> str | None:
     """The road user a party's line names: the first of its parts (between commas and brackets) that ends
-    in a road user's noun, past a vehicle in general and one said not to be there."""
+    in a road user's noun, past a vehicle in general and one said not to be there ("no vehicle, it is an
+    e-scooter")."""
     for part in re.split(r"[,()]", line):
         noun = known_noun(part)
-        if noun and noun not in _GENERAL and not re.match(r"\s*(?:no|not|without)\b", part):
+        if noun and noun not in GENERAL_VEHICLE and not re.match(r"\s*(?:no|not|without)\b", part):
             return noun
     return None
 
@@ -82,11 +81,11 @@ def lettered_parties(text: str, known_noun: Callable[[str], str | None]) -> str:
     labels = list(_LABEL.finditer(text))
     if {m.group("letter") for m in labels} != {"a", "b"} or not any(m.group("form") for m in labels):
         return text  # ("A: the lead car brakes. B: it turns": a list of variants, or a dialogue's speakers)
-    writers = {m.group("letter") for m in labels if _WRITER.search(_line_of(text, m)[m.end("letter") - m.start() :])}
+    writers = {m.group("letter") for m in labels if _WRITER.search(_after_letter(text, m))}
     other = "a" if writers == {"b"} else "b"
     if other == "a":
         return text  # (the article "a" and the letter are one word once lowercased)
-    said = (_line_of(text, m)[m.end("letter") - m.start() :] for m in labels if m.group("letter") == other)
+    said = (_after_letter(text, m) for m in labels if m.group("letter") == other)
     noun = next(filter(None, (_party_noun(line, known_noun) for line in said)), None)
     if noun is None:
         return text

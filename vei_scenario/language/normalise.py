@@ -1071,12 +1071,11 @@ _SECOND_QUESTION = re.compile(r"\band\s+(?:how|what|where|when|who|why|did|do|we
 _OTHER_QUESTION = re.compile(r"\b(?:how\s+(?:far|long|old|many|much)|where|when|what\s+time|distance)\b[^?]*\?", re.I)
 #: A speaker's label opening a turn of a transcript ("C:", "Caller:", "A:", "[15:42] Driver:", "Call taker:"):
 #: one to three words.
-_TURN_LABEL = re.compile(r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:[ \t]*", re.I)
+_SPEAKER = r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?(?:[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:"
+_TURN_LABEL = re.compile(_SPEAKER + r")[ \t]*", re.I)
 #: ... or, in a deposition or a cross-examination (a text with a line opening "Q.", or lines opening "A." and
 #: none "B."), its "Q." and "A." too (elsewhere "a." opens a list's item).
-_DEPOSITION_LABEL = re.compile(
-    r"[ \t]*(?:\[[^\]\n]*\][ \t]*)?(?:[a-z][a-z0-9.'/-]*(?: [a-z0-9.'/-]+){0,2}:|[qa]\.(?=[ \t]))[ \t]*", re.I
-)
+_DEPOSITION_LABEL = re.compile(_SPEAKER + r"|[qa]\.(?=[ \t]))[ \t]*", re.I)
 _LINE_OPENING = re.compile(r"^[ \t]*([qab])\.[ \t]", re.I | re.MULTILINE)
 #: Whom a question is put to, right before it, after the turn's other sentences ("Thank you. Ms. Lindqvist,
 #: your speed?", "Officer Murray, how fast were you going?"): a title and a name, or a name of one or two

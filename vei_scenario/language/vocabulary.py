@@ -338,6 +338,10 @@ SPEED_WORDS = {
     "at low speed": 0.65,
 }
 
+#: Nouns that name any vehicle: a definite one of them is the most recent vehicle named (discourse); a party
+#: said to be one names no kind of road user yet (lettered_parties).
+GENERAL_VEHICLE = frozenset({"vehicle", "vehicles"})
+
 #: Roles of the person a driving lesson or test is about ("the pupil", "cand", "applicant"): at a road
 #: speed or at a vehicle's controls, that person drives the ego.
 LEARNER = frozenset({"pupil", "learner", "trainee", "candidate", "cand", "applicant", "student"})
