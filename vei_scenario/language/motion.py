@@ -2115,6 +2115,24 @@ _TOLD_OF = (["him"], ["her"], ["them"])
 _TOLD_OF_OWNER = frozenset(("his", "her", "their"))
 
 
+#: Words that end the name of where a turn goes ("into Church St, ...", "into the car park and").
+_PAST_PLACE_STOPS = frozenset((".", ",", ";", ":", "!", "?", "and", "then", "but"))
+
+
+def _past_destination(tokens: list[str], j: int) -> int:
+    """Where "across" may stand after the place a turn goes into, said from ``tokens[j]`` ("turned right
+    into Church St right across my path": at "right"): past "into"/"onto" and up to four words of
+    the place's name; ``j`` itself where no such place is said or nothing of "across" follows it."""
+    if tokens[j : j + 1] not in (["into"], ["onto"]):
+        return j
+    for k in range(j + 2, min(j + 7, len(tokens))):
+        if tokens[k] in _PAST_PLACE_STOPS:
+            return j
+        if tokens[k] in ("across", "straight", "right", "directly", "just"):
+            return k
+    return j
+
+
 def _ego_named(tokens: list[str], j: int) -> bool:
     """Whether the ego or its vehicle is named at ``tokens[j]`` ("me", "us", "her", "my car", "his
     bike", "the ego"): what "the front of" is of, in "across the front of my car"."""
@@ -2162,7 +2180,7 @@ def turning_to_a_side(clauses: list, tokens: list[str]) -> list:
             turning = m.slot == "turn" or (m.slot == "behaviour" and m.value[0] == "forced_turn")
             if not turning or (m.value if m.slot == "turn" else m.value[1].get("turn")) == across:
                 continue
-            if not _across_the_ego(tokens, m.end):
+            if not (_across_the_ego(tokens, m.end) or _across_the_ego(tokens, _past_destination(tokens, m.end))):
                 continue  # (the turn to the far side: the reader makes it the turn across, with its arm)
             subject = next((x for x in reversed(kept[:k]) if x.slot in ("actor", "pronoun") and x.value != "ego"), None)
             towards = any(x.slot == "relation" and x.value == "oncoming" for x in kept[:k])

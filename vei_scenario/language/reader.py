@@ -46,6 +46,7 @@ from vei_scenario.language import (
     ego_turner,
     experiencer,
     follower_start,
+    form_fields,
     from_cover,
     fronted_from,
     generic_ego,
@@ -64,6 +65,7 @@ from vei_scenario.language import (
     narrator_ride,
     narrator_vehicle,
     no_lane_beside,
+    norms,
     off_a_place,
     out_of_the_lane,
     owned_by_name,
@@ -935,11 +937,13 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
     tokens = sides.place_sides_in_brackets(tokens)  # ("pulls out of stop (left)": on the left)
     tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
     tokens = acts_said_as_nouns(tokens, _specific_act, _kind_at)  # ("made a sudden swerve into my lane": swerved)
+    tokens = norms.without_norms(tokens, framed)  # ("but you still have to give way": a rule, no deed)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
     tokens = towed(tokens, _kind_at)  # ("a prime mover and trailer": one road user, before who is who)
     tokens = model_said_again(tokens, _kind_at, _known)  # ("a Honda Civic ... the Civic": the Honda)
+    tokens = form_fields.without_aside_fields(tokens, _kind_at, framed)  # ("Witness: driver of the tanker behind")
     tokens = protagonist.without_witness(tokens, framed)  # ("I saw a lad run the red": a witness)
     bystander = witness_on_foot.bystander(tokens, _kind_at, _known)  # ("I was on the pavement ...": only saw it)
     tokens = witness_on_foot.without_writer(tokens, framed) if bystander else tokens
@@ -3745,11 +3749,12 @@ def _specialise(
     if (
         (
             vehicle
-            # (an oncoming rider swerving in; one riding the wrong way, not on a path or lane of its own)
+            # (an oncoming rider swerving in; one riding the wrong way, not on a path or lane of its own,
+            # swerving or in a lane of the road said: "going the wrong way in the fast lane")
             or (
                 a.kind in RIDERS
                 and (towards or a.wrong_way and not (a.pavement or a.own_lane))
-                and first in ("cut_in", "change_lane")
+                and (first in ("cut_in", "change_lane") or (a.wrong_way and a.lane_side is not None))
             )
         )
         and not junction

@@ -65,7 +65,9 @@ def stated_lanes(text: str) -> int | None:
     return None
 
 
-_CLOCK = re.compile(r"\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)(?: (am|pm)\b)?")
+#: A clock "hh : mm"; not the number of a question and its answer ("Q9: 10", a survey's or a form's
+#: question 9 answered 10), nor a figure of speed or distance.
+_CLOCK = re.compile(r"(?<!\bq )\b([01]?\d|2[0-3]) : ([0-5]\d)\b(?! (?:km/h|mph|m/s|m)\b)(?: (am|pm)\b)?")
 _HOUR = re.compile(r"\b(1[0-2]|0?[1-9]) (am|pm)\b")
 
 
