@@ -134,3 +134,45 @@ def test_an_oncoming_turn_to_the_near_side_not_said_across_stays_a_turn_away():
     assert _read("An oncoming car turned right into the car park right in front of the bus stop.")[0][2] == [
         "forced_turn"
     ]
+
+
+def test_a_motorway_junction_by_its_number_is_no_crossroads():
+    text = "I was doing 60 mph on the M6 southbound just after junction 16 when a van cut in from the left lane."
+    assert read(text).map_kind != "crossroad"
+    assert read("At the junction a van pulled out on my left.").map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    ("text", "route"),
+    [
+        (
+            "DC Smith: You were at the end of Conygre Road, waiting to pull out onto the A38.\nSuspect: Yeah.\n"
+            "DC Smith: Which way were you going?\nSuspect: Left. Towards the town centre.\n"
+            "DC Smith: The rider was on the A38, coming from your right, and hit your car.",
+            "left",
+        ),
+        (
+            "Q. Were you turning left or right?\nA. Um, right. Into Mill Lane.\nQ. And the scooter?\n"
+            "A. It came towards me and I hit it.",
+            "right",
+        ),
+    ],
+)
+def test_the_answer_to_which_way_is_the_egos_route(text, route):
+    assert read(text).ego_route == route
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # the way is not the answer's first word, or not a way at all
+        "Q. Which way were you going?\nA. I left the house at eight and a cyclist pulled out on my left.",
+        "Q. Which way were you going?\nA. North, to work. A cyclist pulled out on my left.",
+        # a question told in the story, not asked in a turn
+        "I asked him which way he was going? He said left, and a cyclist pulled out on my left.",
+    ],
+)
+def test_no_answer_of_way_is_read_where_none_is_given(text):
+    from vei_scenario.language.normalise import route_answered
+
+    assert route_answered(text) == text

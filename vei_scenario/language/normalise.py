@@ -1173,6 +1173,48 @@ def speed_answered(text: str, known_noun=lambda phrase: None) -> str:
     return "".join(out) + text[at:]
 
 
+#: A question of the way the one asked went through a junction ("Which way were you going?", "Were you
+#: turning left or right?"); its answer's first word says the ego's route. (The group ``bare`` never
+#: matches: a question of way is always put to "you".)
+_ROUTE_QUESTION = re.compile(
+    r"\b(?:which\s+(?:way|direction)\s+(?:were|was|are)\s+(?:you|u)\b|were\s+(?:you|u)\s+(?:turning|going)\s+"
+    r"(?:left|right|straight)\s+or\b|where\s+were\s+(?:you|u)\s+turning\b)[^?\n]*\?(?P<bare>(?!))?",
+    re.IGNORECASE,
+)
+#: The answer's way and what ends it: a mark, the line's end, or the words that go with a way.
+_ROUTE_ANSWER = re.compile(r"(left|right|straight)\b(?=\s*(?:[.,;!]|$|on\b|ahead\b|over\b|through\b))", re.I)
+#: What is put before an answer's way: the ego's turn or its going straight on.
+ROUTE_SAID = {"left": "i was turning ", "right": "i was turning ", "straight": "i was going "}
+
+
+def route_answered(text: str, known_noun=lambda phrase: None) -> str:
+    """``text`` with the answer to a question of the way the one asked went said as the ego's route
+    ("DC Smith: Which way were you going? / Suspect: Left. Towards the roundabout.": "Suspect: i was
+    turning Left. ..."). Why: in an interview or a cross-examination the way is the answer's first
+    word, said bare; only one that opens the answer (past fillers) and ends its phrase is read, so
+    "Left the house at eight" or "Right, so I was ..." stay as said."""
+    out, at = [], 0
+    openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
+    labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
+    for q in _ROUTE_QUESTION.finditer(text):
+        start = _the_answer(text, q, labels, known_noun) if q.start() >= at else None
+        if start is None:
+            continue
+        answer = text[start : start + 80].split("\n")[0]
+        way = None
+        for word in re.finditer(r"[A-Za-z'-]+", answer):
+            if _ROUTE_ANSWER.match(answer, word.start()):
+                way = word
+                break
+            if word.group(0).lower() not in _ANSWER_FILLERS:
+                break
+        if way is None:
+            continue
+        out += [text[at : start + way.start()], ROUTE_SAID[way.group(0).lower()]]
+        at = start + way.start()
+    return "".join(out) + text[at:]
+
+
 #: "HV" is a host vehicle (the ego) in a safety analysis and a heavy vehicle (a lorry) in an Australian or
 #: New Zealand crash report: the lorry where said with "a"/"an", in the plural, or placed by the narrator
 #: ("the HV in front of me braked").

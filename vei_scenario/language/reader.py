@@ -122,9 +122,11 @@ from vei_scenario.language.no_ones_place import without_places_of_no_one
 from vei_scenario.language.normalise import (
     ANSWER_SAID,
     NUMBER_WORDS,
+    ROUTE_SAID,
     abbreviation_points,
     normalise,
     plain_letters,
+    route_answered,
     speed_answered,
 )
 from vei_scenario.language.object_participle import participle_phrase
@@ -1289,6 +1291,10 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
         braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
+        if slot == "map" and tok in ("junction", "junctions") and tokens[i + 1 : i + 2] and tokens[i + 1].isdigit():
+            ignored.extend(tokens[i : i + 2])  # ("near junction 27": a motorway's, by number)
+            i += 2
+            continue
         if slot == "behaviour" and tokens[i + len(key) : i + len(key) + 1] in (["line"], ["sign"], ["markings"]):
             # "at the give way line", "a stop sign": a junction's, no behaviour
             clauses[-1][1].append(_Mention("map", "crossroad", " ".join(tokens[i : i + len(key) + 1]), i, prev))
@@ -1984,6 +1990,7 @@ def read(text: str) -> Reading:
     text = plain_letters(text)  # ("piéton", "Fußgänger": the reader's words are plain letters)
     text = filled_outline(text)  # ("at <v_ego> km/h ... Examples: | v_ego | / | 70 |": at 70 km/h)
     answered = speed_answered(text, _actor_noun_in)  # ("How fast were you going? / C: Twenty.": the caller's speed)
+    answered = route_answered(answered, _actor_noun_in)  # ("Which way were you going? / Left.": the ego's turn)
     reading = _read_answered(answered)
     if reading is not None and answered != text:  # (the words put in to say the answer are no words of the text)
         written = set(re.findall(r"[a-z]+", text.lower()))
@@ -1992,7 +1999,7 @@ def read(text: str) -> Reading:
 
 
 #: The words :func:`speed_answered` puts before an answer's number ("i was doing 30").
-_ANSWER_WORDS = frozenset(ANSWER_SAID.split())
+_ANSWER_WORDS = frozenset(ANSWER_SAID.split()) | {w for said in ROUTE_SAID.values() for w in said.split()}
 
 
 def _read_answered(text: str) -> Reading:
