@@ -39,6 +39,11 @@ def test_a_witness_field_that_tells_an_account_is_read():
     assert _read(text) == [("van", "junction_left", ["run_red_light"])]  # (the account names the road user)
     text = "Witness statement: I was driving at 30 km/h when a scooter rode onto the zebra from the right."
     assert _read(text) == [("e-scooter", "roadside_right", ["cross_in_front"])]
+    text = "Witness: the hatchback was on the roundabout when a moped came in from the left and did not stop."
+    assert _read(text)  # (two road users: an account, not who saw it)
+    text = "LAWYER: What time was it?\nWITNESS: Evening.\nLAWYER: And then?\nWITNESS: A taxi ran the red light."
+    assert _read(text) == [("car", "junction_left", ["run_red_light"])]  # (a speaker's turns)
+    assert layers_from_text(text, 0)["environment"]["time_of_day"] is not None
 
 
 @pytest.mark.parametrize(

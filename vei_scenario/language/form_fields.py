@@ -10,13 +10,15 @@ says: a witness watched the scene, and the injured is one of the parties named a
 A field is told by its label opening a line or sentence, then a colon; its value runs to the end of
 its sentence. The label is a word for witness or for the injured, in English or in the languages of
 the European accident statement as writers type them, with at most a word of what the field holds
-("Witness details:", "Injured persons:").
+("Witness details:", "Injured persons:"). A label that opens more than one turn, or a turn after a
+question, is a transcript's speaker ("WITNESS: A taxi ran the red"), no field.
 
-- A witnesses' field's value is taken out, unless it holds an account: "Witness statement:" is no
-  list of who saw it (its second word is not one of :data:`_LISTED`); a value with the writer as "I"
-  or "we" in it is the writer's own; and a value in which someone tells or sees what a road user did
-  ("a man at the stop said the van went through red") carries that road user, which the rules for
-  witnesses who speak read.
+- A witnesses' field's value is taken out where it names one road user (the witness), unless it
+  holds an account: "Witness statement:" is no list of who saw it (its second word is not one of
+  :data:`_LISTED`); a value that names two road users ("the hatchback was on the roundabout when a
+  moped came in"), or none, or the writer as "I" or "we" is an account; and a value in which
+  someone tells or sees what a road user did ("a man at the stop said the van went through red")
+  carries that road user, which the rules for witnesses who speak read.
 - An injuries' field's value is taken out where every kind of road user it names is named elsewhere
   in the text: it names the parties again. Where it is the only place a kind is named ("Injuries:
   scooter rider cut on chin", the rest saying only "B"), it is how the text names that party, and it
@@ -52,14 +54,19 @@ _TELLING = frozenset({"say", "tell", "state", "see", "watch", "notice", "claim",
 KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 
 
-def _kinds(tokens: list[str], kind_at: KindAt) -> set[str]:
-    """The kinds of road user named in ``tokens``."""
-    kinds: set[str] = set()
-    k = 0
+def _named(tokens: list[str], kind_at: KindAt) -> list[str]:
+    """The kinds of road user named in ``tokens``, one per mention, the ego's left out; a person and
+    what they drive or ride ("driver of the tanker", "rider of a scooter") are one mention."""
+    kinds: list[str] = []
+    k, joined_at = 0, -1
     while k < len(tokens):
         found = kind_at(tokens, k)
+        if found is not None and found[0] != "ego" and k != joined_at:
+            kinds.append(found[0])
         if found is not None:
-            kinds.add(found[0])
+            after = k + found[1]
+            if tokens[after : after + 1] == ["of"]:
+                joined_at = after + 1 + (tokens[after + 1 : after + 2] in (["the"], ["a"], ["an"]))
         k += found[1] if found is not None else 1
     return kinds
 
@@ -68,17 +75,17 @@ def _tells_of_a_road_user(value: list[str], kind_at: KindAt) -> bool:
     """Whether a verb of seeing or telling in ``value`` has a road user after it."""
     for k, word in enumerate(value):
         if lemma_in(word, _TELLING):
-            return bool(_kinds(value[k + 1 :], kind_at))
+            return bool(_named(value[k + 1 :], kind_at))
     return False
 
 
 def _aside(tokens: list[str], label: str, value: list[str], start: int, end: int, kind_at: KindAt) -> bool:
     """Whether the field with ``label`` and ``value`` (at ``tokens[start:end]``) names no road user
-    that acts there (see the module's docstring)."""
+    that acts (see the module's docstring)."""
+    named = _named(value, kind_at)
     if label in _WITNESS:
-        return not _WRITER & set(value) and not _tells_of_a_road_user(value, kind_at)
-    named = _kinds(value, kind_at) - {"ego"}
-    return bool(named) and named <= _kinds(tokens[:start] + tokens[end:], kind_at)
+        return len(named) == 1 and not _WRITER & set(value) and not _tells_of_a_road_user(value, kind_at)
+    return bool(named) and set(named) <= set(_named(tokens[:start] + tokens[end:], kind_at))
 
 
 def without_aside_fields(tokens: list[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
@@ -88,13 +95,25 @@ def without_aside_fields(tokens: list[str], kind_at: KindAt, dropped: list[str])
     return _without(_without(tokens, _WITNESS, kind_at, dropped), _INJURED, kind_at, dropped)
 
 
+def _speaker(tokens: list[str], i: int, label: str) -> bool:
+    """Whether ``label`` at ``tokens[i]`` names who speaks in a transcript, not a form's field: it
+    labels more than one turn ("WITNESS: Evening. ... WITNESS: A taxi ran the red"), or its turn
+    answers a question ("Q: And then? WITNESS: ...")."""
+    labels = sum(
+        1
+        for k, w in enumerate(tokens[:-1])
+        if w == label and tokens[k + 1] == ":" and (k == 0 or tokens[k - 1] in SENTENCE_END)
+    )
+    return labels > 1 or tokens[i - 1 : i] == ["?"]
+
+
 def _without(tokens: list[str], labels: frozenset[str], kind_at: KindAt, dropped: list[str]) -> list[str]:
     """``tokens`` without the values of the fields labelled by one of ``labels`` that are aside."""
     out: list[str] = []
     i = 0
     while i < len(tokens):
         label = tokens[i]
-        if (i == 0 or tokens[i - 1] in SENTENCE_END) and label in labels:
+        if (i == 0 or tokens[i - 1] in SENTENCE_END) and label in labels and not _speaker(tokens, i, label):
             colon = i + 1 + (tokens[i + 1 : i + 2] != [] and tokens[i + 1] in _LISTED)
             if tokens[colon : colon + 1] == [":"]:
                 end = colon + 1
