@@ -181,3 +181,28 @@ def test_no_answer_of_way_is_read_where_none_is_given(text):
     from vei_scenario.language.normalise import route_answered
 
     assert route_answered(text) == text
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist pulled out in front of me. I swerved to avoid him and hit the metal post.",
+        "A cyclist pulled out in front of me. I braked, but my van hit the kerb.",
+        "A young man on an e-scooter came out from the pavement on my left. I turn the wheel right and brake, "
+        "I not touch him, but my van hit the kerb of the traffic island.",
+    ],
+)
+def test_hitting_street_furniture_to_escape_is_no_contact_with_the_road_user(text):
+    assert read(text).intent == "near_miss"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A cyclist pulled out in front of me. I braked but hit the cyclist.",
+        # a passenger's fall on the bus is not the ego escaping into the pole
+        "An Audi cut straight in front of the bus. Driver slammed on and an old lady banged her head on the pole.",
+    ],
+)
+def test_contact_that_is_not_with_furniture_stays(text):
+    assert read(text).intent == "collision"

@@ -364,12 +364,21 @@ def _escaping_into_furniture(words: list[str], i: int, sentence: list[str]) -> b
     kerb", "she wobbled, clipped the curb and came off"): their own fall, no contact with the ego (a
     vehicle that "hit the kerb and rolled" may be the ego's own crash)."""
     skip = _DETERMINERS | _POSSESSIVES | _TO_FURNITURE
-    head = next((w for w in words[i + 1 : i + 6] if w not in skip), "")
+    at = next((k for k in range(i + 1, min(i + 6, len(words))) if words[k] not in skip), None)
+    head = words[at] if at is not None else ""
     if head == "it":  # ("had to pull in to the hedge, scraped it": the furniture moved to, told again)
         head = _goal_before(sentence[: len(sentence) - len(words) + i])
+    nxt = words[at + 1] if at is not None and at + 1 < len(words) else ""
+    if head not in _FURNITURE and nxt in _FURNITURE and not _road_user_word(head):
+        head = nxt  # ("hit the metal post", "into a low wall": one word of what it is made of or like)
     if head not in _FURNITURE:
         return False
     escaping = any(_lemmas(x) & (_EVADE | {"avoid", "miss", "dodge"}) for x in sentence)
+    # (braking is escaping where the ego hits it: "I brake, I not touch him, but my van hit the kerb";
+    # not where someone else does: "Driver slammed on and an old lady banged her head on the pole")
+    before = sentence[: len(sentence) - len(words) + i]
+    egos = next((w for w in reversed(before) if w in _EGO_HEADS | _POSSESSIVES | _THIRD_SUBJECTS), "")
+    escaping = escaping or (egos in _EGO_HEADS | {"my", "our"} and any(_lemmas(x) & _BRAKE for x in sentence))
     forced = any(sentence[k : k + 2] == ["had", "to"] for k in range(len(sentence) - len(words) + i))
     return escaping or forced or _walker_or_rider_before(sentence[: len(sentence) - len(words) + i])
 
