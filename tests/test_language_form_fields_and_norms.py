@@ -206,3 +206,63 @@ def test_hitting_street_furniture_to_escape_is_no_contact_with_the_road_user(tex
 )
 def test_contact_that_is_not_with_furniture_stays(text):
     assert read(text).intent == "collision"
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("At that junction you have to stop and a van came flying round the corner and hit my front.", "van"),
+        ("You have to understand the lorry pulled out right in front of me from a side road on the left.", "truck"),
+        ("Then you have to swerve because this idiot on a bike comes straight out of a side road on the left.", "bicycle"),
+    ],
+)
+def test_what_happens_after_a_rule_or_around_it_is_still_read(text, kind):
+    assert [k for k, _, _ in _read(text)][:1] == [kind]
+
+
+def test_a_text_told_to_you_keeps_what_you_have_to_do():
+    text = "You are the ego vehicle. You have to turn left at the crossroads while an oncoming car goes straight."
+    assert read(text).ego_route == "left"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Q: Which way were you looking when you pulled out?\nA: Right. I didn't see the van coming from the left.",
+        "Q: Which way were you going?\nA: Not left, I was going straight on. A cyclist came out on my left.",
+        "Q: Which way were you going?\nA: Right, so I was heading up the main road and a van pulled out on my left.",
+    ],
+)
+def test_no_way_is_read_from_an_answer_that_gives_none(text):
+    assert read(text).ego_route is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Approaching the junction 30 mph, a car pulled out from the left.",
+        "While waiting at the junction 3 cyclists rode through the red light from the right.",
+    ],
+)
+def test_a_number_after_junction_that_counts_something_else_leaves_the_junction(text):
+    assert read(text).map_kind == "crossroad"
+
+
+@pytest.mark.parametrize(
+    ("text", "read_as"),
+    [
+        ("Witness: the lorry ran the red light at speed.", [("truck", "junction_left", ["run_red_light"])]),
+        (
+            "Other party: pedestrian\nInjuries: pedestrian stepped off the kerb on my right and I hit her at about "
+            "15 mph, she hurt her hip.",
+            [("pedestrian", "roadside_right", ["cross_in_front"])],
+        ),
+    ],
+)
+def test_a_field_that_tells_a_deed_is_an_account(text, read_as):
+    assert _read(text) == read_as
+
+
+def test_a_witness_named_by_what_they_drive_is_one_witness():
+    text = "I was doing 30 km/h when a scooter rode onto the zebra from the right.\nWitness: bus driver behind me."
+    assert _read(text) == [("e-scooter", "roadside_right", ["cross_in_front"])]

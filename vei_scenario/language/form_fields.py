@@ -13,6 +13,9 @@ the European accident statement as writers type them, with at most a word of wha
 ("Witness details:", "Injured persons:"). A label that opens more than one turn, or a turn after a
 question, is a transcript's speaker ("WITNESS: A taxi ran the red"), no field.
 
+A field whose value tells a deed on the road ("Witness: the lorry ran the red light", "Injuries: the
+cyclist fell off when he rode into my door": a verb of :data:`_DEEDS`) holds an account and stays.
+
 - A witnesses' field's value is taken out where it names one road user (the witness), unless it
   holds an account: "Witness statement:" is no list of who saw it (its second word is not one of
   :data:`_LISTED`); a value that names two road users ("the hatchback was on the roundabout when a
@@ -30,6 +33,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from vei_scenario.language.ego import SENTENCE_END, lemma_in
+from vei_scenario.language.lemmas import lemmas
 
 #: Labels of a witnesses' field: English, and the European accident statement's Dutch, German,
 #: Spanish, Italian and Portuguese field names.
@@ -56,7 +60,7 @@ KindAt = Callable[[list[str], int], "tuple[str, int] | None"]
 
 def _named(tokens: list[str], kind_at: KindAt) -> list[str]:
     """The kinds of road user named in ``tokens``, one per mention, the ego's left out; a person and
-    what they drive or ride ("driver of the tanker", "rider of a scooter") are one mention."""
+    what they drive or ride ("driver of the tanker", "bus driver") are one mention."""
     kinds: list[str] = []
     k, joined_at = 0, -1
     while k < len(tokens):
@@ -65,6 +69,7 @@ def _named(tokens: list[str], kind_at: KindAt) -> list[str]:
             kinds.append(found[0])
         if found is not None:
             after = k + found[1]
+            joined_at = after  # ("bus driver", "scooter rider": one person, by what they drive)
             if tokens[after : after + 1] == ["of"]:
                 joined_at = after + 1 + (tokens[after + 1 : after + 2] in (["the"], ["a"], ["an"]))
         k += found[1] if found is not None else 1
@@ -79,10 +84,29 @@ def _tells_of_a_road_user(value: list[str], kind_at: KindAt) -> bool:
     return False
 
 
+#: Verbs (by lemma) of a road user's deed on the road: a field's value with one tells what happened.
+_DEEDS = frozenset(("go", "run", "hit", "pull", "turn", "cross", "travel", "drive", "ride", "come", "cut", "overtake",
+                    "swerve", "strike", "collide", "crash", "mount", "reverse", "jump", "step", "walk", "speed",
+                    "race", "fly", "shoot", "knock", "brake", "fall", "veer", "dart", "emerge", "enter"))  # fmt: skip
+
+
+def _noun_here(value: list[str], k: int) -> bool:
+    """Whether the word at ``value[k]`` is a noun there, after an article, an owner or an adjective
+    ("a small cut on the hand", "his fall"): no deed."""
+    before = value[k - 1] if k > 0 else ""
+    return before in _NOUN_OPENERS or "ADJ" in lemmas(before)
+
+
+#: Words after which a verb's form is a noun.
+_NOUN_OPENERS = frozenset(("a", "an", "the", "his", "her", "their", "my", "its", "our", "no", "minor", "bad"))
+
+
 def _aside(tokens: list[str], label: str, value: list[str], start: int, end: int, kind_at: KindAt) -> bool:
     """Whether the field with ``label`` and ``value`` (at ``tokens[start:end]``) names no road user
     that acts (see the module's docstring)."""
     named = _named(value, kind_at)
+    if any(lemma_in(w, _DEEDS) and not kind_at(value, k) and not _noun_here(value, k) for k, w in enumerate(value)):
+        return False  # ("Witness: the lorry ran the red", "Injuries: the cyclist fell off when he rode into")
     if label in _WITNESS:
         return len(named) == 1 and not _WRITER & set(value) and not _tells_of_a_road_user(value, kind_at)
     return bool(named) and set(named) <= set(_named(tokens[:start] + tokens[end:], kind_at))

@@ -484,3 +484,29 @@ def ways_stop_at(tokens: list[str], i: int) -> bool:
     if tokens[i - 1].endswith("-way"):
         return tokens[i - 1].removesuffix("-way") in _WAYS
     return tokens[i - 1] == "way" and i >= 2 and tokens[i - 2] in _WAYS
+
+
+#: Units a number after "junction" may count: then the number is a speed or a distance, no junction's.
+_COUNTED = frozenset(("mph", "kph", "km/h", "km", "m", "metres", "meters", "miles", "mile", "ft", "feet", "yards", "s"))
+#: Words of a motorway, where "junction 27" is an interchange by its number.
+_MOTORWAY = frozenset(("motorway", "motorways", "mwy", "freeway", "interstate", "autobahn", "slip", "carriageway"))
+
+
+def numbered_on_a_motorway(tokens: list[str], i: int) -> bool:
+    """Whether "junction" at ``tokens[i]`` is a motorway's interchange named by its number ("on the M6
+    near junction 19", "between junctions 25 and 26 of the motorway"): a number after it, no unit or
+    noun after the number ("the junction 30 mph", "the junction 2 pedestrians" count something else),
+    and a motorway said in the text (a word of one, or its name: "M25", "I-95", "A1(M)")."""
+    number = tokens[i + 1 : i + 2]
+    if not number or not number[0].isdigit():
+        return False
+    after = tokens[i + 2] if i + 2 < len(tokens) else ""
+    nouns = lemmas(after).get("NOUN", ()) if after.isalpha() else ()
+    plural = bool(nouns) and after not in nouns
+    if after in _COUNTED or plural:
+        return False  # ("the junction 30 mph", "the junction 3 cyclists")
+    named = any(
+        w in ("m", "i") and k + 1 < len(tokens) and tokens[k + 1].isdigit() or w.startswith("i-")
+        for k, w in enumerate(tokens)
+    )
+    return named or bool(_MOTORWAY & set(tokens))

@@ -1177,12 +1177,21 @@ def speed_answered(text: str, known_noun=lambda phrase: None) -> str:
 #: turning left or right?"); its answer's first word says the ego's route. (The group ``bare`` never
 #: matches: a question of way is always put to "you".)
 _ROUTE_QUESTION = re.compile(
-    r"\b(?:which\s+(?:way|direction)\s+(?:were|was|are)\s+(?:you|u)\b|were\s+(?:you|u)\s+(?:turning|going)\s+"
-    r"(?:left|right|straight)\s+or\b|where\s+were\s+(?:you|u)\s+turning\b)[^?\n]*\?(?P<bare>(?!))?",
+    r"\b(?:which\s+(?:way|direction)\s+(?:were|was|are)\s+(?:you|u)\s+(?:going|travelling|traveling|heading|headed|"
+    r"turning|driving|riding|coming)\b|were\s+(?:you|u)\s+(?:turning|going)\s+(?:left|right|straight(?:\s+on)?)\s+or\b"
+    r"|where\s+were\s+(?:you|u)\s+turning\b)[^?\n]*\?(?P<bare>(?!))?",
     re.IGNORECASE,
 )
-#: The answer's way and what ends it: a mark, the line's end, or the words that go with a way.
-_ROUTE_ANSWER = re.compile(r"(left|right|straight)\b(?=\s*(?:[.,;!]|$|on\b|ahead\b|over\b|through\b))", re.I)
+#: The answer's way and what ends it: a mark, the line's end, or the words that go with a way ("Left
+#: into Church Street", "Straight on"); a comma only after "left" or "straight" ("Right, so I was ..."
+#: opens a sentence, no way).
+_ROUTE_ANSWER = re.compile(
+    r"(?:(left|straight)\b(?=\s*,)|(left|right|straight)\b(?=\s*(?:[.;!]|$|into\b|onto\b|across\b|on\b)))"
+    r"|(straight)\b(?=\s+ahead\b)",
+    re.I,
+)
+#: Words that may open an answer before its way; a denial ("not", "no") is none: "Not left, ..."
+_ROUTE_FILLERS = _ANSWER_FILLERS - {"not", "no", "nope", "never"}
 #: What is put before an answer's way: the ego's turn or its going straight on.
 ROUTE_SAID = {"left": "i was turning ", "right": "i was turning ", "straight": "i was going "}
 
@@ -1191,8 +1200,9 @@ def route_answered(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` with the answer to a question of the way the one asked went said as the ego's route
     ("DC Smith: Which way were you going? / Suspect: Left. Towards the roundabout.": "Suspect: i was
     turning Left. ..."). Why: in an interview or a cross-examination the way is the answer's first
-    word, said bare; only one that opens the answer (past fillers) and ends its phrase is read, so
-    "Left the house at eight" or "Right, so I was ..." stay as said."""
+    word, said bare; only one that opens the answer (past fillers, not a denial) and ends its phrase
+    is read, so "Left the house at eight", "Right, so I was ...", "Not left" stay as said; a question
+    of which way the one asked looked, faced or was thrown asks no way of going."""
     out, at = [], 0
     openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
     labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
@@ -1206,7 +1216,7 @@ def route_answered(text: str, known_noun=lambda phrase: None) -> str:
             if _ROUTE_ANSWER.match(answer, word.start()):
                 way = word
                 break
-            if word.group(0).lower() not in _ANSWER_FILLERS:
+            if word.group(0).lower() not in _ROUTE_FILLERS:
                 break
         if way is None:
             continue

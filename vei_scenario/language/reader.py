@@ -939,7 +939,8 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
     tokens = sides.place_sides_in_brackets(tokens)  # ("pulls out of stop (left)": on the left)
     tokens = wala_riders(tokens)  # ("one bike wala came wrong side": a motorcyclist)
     tokens = acts_said_as_nouns(tokens, _specific_act, _kind_at)  # ("made a sudden swerve into my lane": swerved)
-    tokens = norms.without_norms(tokens, framed)  # ("but you still have to give way": a rule, no deed)
+    said = re.findall(r"[a-z']+|[.,;:!?]", text.lower())  # (as written: the tokens say "you are" as "i am")
+    tokens = norms.without_norms(tokens, framed, said)  # ("but you still have to give way": a rule, no deed)
     tokens = addressee.spoken_to(tokens, _kind_at)  # ("To the jogger on Elm St - you ran across": the jogger)
     tokens = run_on.break_after_a_speed(tokens, _actor_at, FUNCTION_WORDS)  # ("20 mph a van pulled out")
     tokens = whose_act.unnamed_rider(tokens, _kind_at)  # ("car clipped rider": an e-scooter's rider)
@@ -1291,7 +1292,7 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
             tokens[i - 1 : i] in (["the"], ["a"], ["an"]) and "NOUN" in _pos(tok) and tok not in ("stop", "crossing")
         )
         braking = "brake" in forms(tok)  # ("slammed on its brakes": the braking, said with its brakes)
-        if slot == "map" and tok in ("junction", "junctions") and tokens[i + 1 : i + 2] and tokens[i + 1].isdigit():
+        if slot == "map" and tok in ("junction", "junctions") and junctions.numbered_on_a_motorway(tokens, i):
             ignored.extend(tokens[i : i + 2])  # ("near junction 27": a motorway's, by number)
             i += 2
             continue
