@@ -118,6 +118,7 @@ FIRST = {
     "language_independent_z65.json": ((48, 48, 6, 43), "measured when written"),
     "language_independent_z66.json": ((48, 48, 3, 42), "measured when written"),
     "language_independent_z67.json": ((48, 48, 17, 46), "measured when written"),
+    "language_independent_z68.json": ((48, 48, 6, 48), "held out: measured before the round and once after it"),
 }
 
 
