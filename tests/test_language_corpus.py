@@ -131,8 +131,10 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z62.json": (50, 11),
     ROOT / "tests" / "data" / "language_independent_z63.json": (50, 1),
     ROOT / "tests" / "data" / "language_independent_z64.json": (50, 6),
-    ROOT / "tests" / "data" / "language_independent_z65.json": (48, 6),
+    ROOT / "tests" / "data" / "language_independent_z65.json": (48, 11),
     ROOT / "tests" / "data" / "language_independent_z66.json": (48, 4),
+    ROOT / "tests" / "data" / "language_independent_z67.json": (48, 21),
+    ROOT / "tests" / "data" / "language_independent_z68.json": (48, 6),
 }
 
 

@@ -213,7 +213,10 @@ def test_contact_that_is_not_with_furniture_stays(text):
     [
         ("At that junction you have to stop and a van came flying round the corner and hit my front.", "van"),
         ("You have to understand the lorry pulled out right in front of me from a side road on the left.", "truck"),
-        ("Then you have to swerve because this idiot on a bike comes straight out of a side road on the left.", "bicycle"),
+        (
+            "Then you have to swerve because this idiot on a bike comes straight out of a side road on the left.",
+            "bicycle",
+        ),
     ],
 )
 def test_what_happens_after_a_rule_or_around_it_is_still_read(text, kind):

@@ -1139,6 +1139,16 @@ def _the_answer(text: str, q: re.Match, labels: re.Pattern, known_noun) -> int |
     return None if label is None else label.end()
 
 
+def _answers(text: str, question: re.Pattern, known_noun) -> list[tuple[int, int]]:
+    """Where each question of ``question``'s kind put in a turn of ``text`` starts, and where its answer
+    does (see :func:`_the_answer`); the turns are a deposition's "Q."/"A." where those open its lines,
+    else its speakers' labels."""
+    openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
+    labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
+    found = ((q.start(), _the_answer(text, q, labels, known_noun)) for q in question.finditer(text))
+    return [(asked, start) for asked, start in found if start is not None]
+
+
 def speed_answered(text: str, known_noun=lambda phrase: None) -> str:
     """``text`` with the answer to a question of the one asked's speed said as a speed ("CT: How fast were
     you going? / C: Twenty? Not even. Twenty.": "C: i was doing Twenty, Not even. ..."; "Q: What speed
@@ -1148,11 +1158,8 @@ def speed_answered(text: str, known_noun=lambda phrase: None) -> str:
     is one: "I'm 82", "the limit is 30", "3 cars ahead" are left as said. ``known_noun(phrase)``: the
     road-user noun a phrase ends in, or None."""
     out, at = [], 0
-    openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
-    labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
-    for q in _SPEED_QUESTION.finditer(text):
-        start = _the_answer(text, q, labels, known_noun) if q.start() >= at else None
-        if start is None:
+    for asked, start in _answers(text, _SPEED_QUESTION, known_noun):
+        if asked < at:
             continue
         answer = text[start : start + 80].split("\n")[0]
         number = _ANSWER_NUMBER.search(answer)
@@ -1204,11 +1211,8 @@ def route_answered(text: str, known_noun=lambda phrase: None) -> str:
     is read, so "Left the house at eight", "Right, so I was ...", "Not left" stay as said; a question
     of which way the one asked looked, faced or was thrown asks no way of going."""
     out, at = [], 0
-    openings = {m.group(1).lower() for m in _LINE_OPENING.finditer(text)}
-    labels = _DEPOSITION_LABEL if "q" in openings or openings == {"a"} else _TURN_LABEL
-    for q in _ROUTE_QUESTION.finditer(text):
-        start = _the_answer(text, q, labels, known_noun) if q.start() >= at else None
-        if start is None:
+    for asked, start in _answers(text, _ROUTE_QUESTION, known_noun):
+        if asked < at:
             continue
         answer = text[start : start + 80].split("\n")[0]
         way = None
