@@ -68,7 +68,7 @@ def _told_to_you(tokens: list[str]) -> bool:
 
 #: Words after "you" that show it is an object, not a subject ("thank you.", "I'll show you where").
 _AFTER_OBJECT = frozenset(("know", "see", "guys", "all", "lot", "very", "too", "for", "to", "that", "if", "where",
-                           "what", "how", "mate", "lot"))  # fmt: skip
+                           "what", "how", "mate"))  # fmt: skip
 
 
 def _question(tokens: list[str], end: int) -> bool:
