@@ -119,6 +119,8 @@ FIRST = {
     "language_independent_z66.json": ((48, 48, 3, 42), "measured when written"),
     "language_independent_z67.json": ((48, 48, 17, 46), "measured when written"),
     "language_independent_z68.json": ((48, 48, 6, 48), "held out: measured before the round and once after it"),
+    "language_independent_z69.json": ((48, 48, 12, 43), "measured when written"),
+    "language_independent_z70.json": ((48, 48, 2, 36), "held out: measured before the round and once after it"),
 }
 
 

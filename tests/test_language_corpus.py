@@ -135,6 +135,8 @@ INDEPENDENT = {
     ROOT / "tests" / "data" / "language_independent_z66.json": (48, 4),
     ROOT / "tests" / "data" / "language_independent_z67.json": (48, 21),
     ROOT / "tests" / "data" / "language_independent_z68.json": (48, 6),
+    ROOT / "tests" / "data" / "language_independent_z69.json": (48, 12),
+    ROOT / "tests" / "data" / "language_independent_z70.json": (48, 2),
 }
 
 
