@@ -1114,6 +1114,12 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
         if n and i + n < len(out) and out[i + n] == ",":
             end = apposition_end(out, i + n, kind_at, known, most=5)
             end = _definite_apposition_end(out, i + n, kind_at, known) if end is None else end
+            noun = _described_apposition(out, i + n, kind_at, known) if end is None else None
+            if noun is not None:  # ("Vehicle 1, a car travelling east on Mill Rd, struck ...": the ego
+                names = _vehicle_names(out, i + n + 1, noun, kind_at, known)  # travelling east, said once)
+                dropped.extend(out[i + n + 1 : noun])
+                del out[i + n + 1 : noun]
+                out = _named_again_as_ego(out, i + n, names, kind_at, known, dropped)
         name = i - (i > 0 and out[i - 1] in DEFINITE)  # (where the ego's name starts: "the ego")
         before = _vehicle_before_ego(out, name, i + n, kind_at, known) if n and end is None else None
         if end is not None:
@@ -1129,6 +1135,38 @@ def _ego_apposition(tokens: list[str], kind_at: KindAt, known: Known, dropped: l
             out = _named_again_as_ego(out, i + n, names, kind_at, known, dropped)
         i += max(n, 1)
     return out
+
+
+#: Words that may open what a report says of its vehicle right after naming it in apposition to the
+#: ego ("Vehicle 1, a car in lane 1 ...", "Unit 1, a pickup northbound ...").
+_DESCRIBED_BY = frozenset(("in", "on", "along", "with", "from", "towards", "toward", "heading", "at"))
+
+
+def _described_apposition(tokens: list[str], comma: int, kind_at: KindAt, known: Known) -> int | None:
+    """Where the vehicle's noun phrase ends, in an apposition to the ego's name that goes on to say what
+    that vehicle was doing ("Vehicle 1, a car travelling east on the A614, struck ...", "Unit 1, a
+    passenger car northbound in the left lane, changed lanes"): after the comma at ``comma``, "a"/"an",
+    a vehicle's noun phrase (as :func:`apposition_end` reads one), then a participle, a "-bound" heading
+    or a preposition, and a comma closing it all before the sentence ends. The noun phrase is the ego
+    named again; what follows it is said of the ego. None where it is anything else (", a car
+    overtakes": a clause of its own; ", a cyclist riding ...": someone else)."""
+    j = comma + 1
+    if j >= len(tokens) or tokens[j] not in ("a", "an"):
+        return None
+    p = next((q for q in road_user_phrases(tokens[: j + 7], kind_at, known) if q.start == j), None)
+    if p is None or p.kind not in VEHICLES or p.end >= len(tokens):
+        return None
+    nxt = tokens[p.end]
+    participle = nxt.endswith(("ing", "ed", "en")) and "VERB" in lemmas(nxt)  # ("travelling", "stopped")
+    participle = participle or nxt.endswith("bound") or nxt in _DESCRIBED_BY
+    if not participle:
+        return None
+    for k in range(p.end + 1, len(tokens)):
+        if tokens[k] in SENTENCE_END:
+            return None
+        if tokens[k] == ",":
+            return p.end
+    return None
 
 
 def _vehicle_names(tokens: list[str], start: int, end: int, kind_at: KindAt, known: Known) -> tuple[str, set[str]]:

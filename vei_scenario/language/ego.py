@@ -243,24 +243,35 @@ def _marked(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]
     return tokens
 
 
+#: Words between two names of one vehicle in brackets ("(rigid HGV, skip lorry)", "(bus or coach)").
+_SAID_AGAIN = frozenset((",", "or", "/"))
+
+
 def _ego_bracketed(tokens: list[str], kind_at: KindAt, known: Known, dropped: list[str]) -> list[str]:
     """ "The test vehicle (an Iveco tipper) ...", "Host vehicle (a minibus) ...": brackets right after
-    an ego phrase that hold only a vehicle (its article, its make or model, its modifiers) say what
-    the ego is; they go, and every later "the tipper" is the ego. Brackets that hold anything else
-    ("(following a van)", "(in lane 2)") stay."""
+    an ego phrase that hold only a vehicle (its article, its make or model, its modifiers; or several
+    names of it: "(rigid HGV, skip lorry)") say what the ego is; they go, and every later "the tipper"
+    is the ego. Brackets that hold anything else ("(following a van)", "(in lane 2)") stay."""
     for p in road_users(tokens, kind_at, known):
         if p.kind != "ego" or tokens[p.end : p.end + 1] != ["("]:
             continue
         close = next((k for k in range(p.end + 1, min(p.end + 8, len(tokens))) if tokens[k] == ")"), None)
         inside = [q for q in road_users(tokens, kind_at, known) if close and p.end < q.start < close]
-        if close is None or len(inside) != 1 or inside[0].kind not in VEHICLES or inside[0].end != close:
+        if close is None or not inside or any(q.kind not in VEHICLES for q in inside) or inside[-1].end != close:
             continue
-        q = inside[0]
+        starts = [p.end + 1] + [q.end for q in inside[:-1]]  # ("(rigid HGV, skip lorry)": one said twice)
         if any(
-            not (w in INDEFINITE or w.replace(".", "").isdigit() or (w.isalpha() and not known(tokens, j)))
-            for j, w in enumerate(tokens[p.end + 1 : q.head], p.end + 1)
+            not (
+                w in INDEFINITE
+                or w.replace(".", "").isdigit()
+                or (w.isalpha() and not known(tokens, j))
+                or (n > 0 and w in _SAID_AGAIN)
+            )
+            for n, (start, q) in enumerate(zip(starts, inside))
+            for j, w in enumerate(tokens[start : q.head], start)
         ):
             continue
+        q = inside[-1]
         dropped.extend(w for w in tokens[p.end + 1 : close] if w.isalpha() and w not in INDEFINITE)
         out = [*tokens[: p.end], *tokens[close + 1 :]]
         return as_ego(out, kind_at, known, tokens[q.end - 1], dropped)

@@ -2130,6 +2130,8 @@ _HARMED = frozenset(("injure", "hurt", "kill", "wound", "maim"))
 #: Nouns of the consequences of a contact: denied ("no damage", "escaped injury"), a contact was not.
 _HARM_NOUNS = frozenset(("damage", "injury", "injuries", "casualty", "casualties", "scratch", "dent"))
 #: Words of being unhurt, said of a person ("the boy was fine"): no injury, which is not a safe pass.
+#: A note's one-word verdict at the end of a sentence ("ego gives way -> ok").
+_FINE = frozenset(("ok", "okay", "alright"))
 _UNHURT = frozenset(("fine", "ok", "okay", "alright", "unhurt", "unharmed", "unscathed", "uninjured"))
 _PASSIVE_AUX = frozenset(("was", "were", "got", "get", "gets", "is", "are", "been", "be", "being"))
 
@@ -3031,6 +3033,8 @@ def _outcome_cues(said: str, named: frozenset[str]) -> tuple[Cue, ...]:
                 continue
             if len(words) == 2 and words[0] == "all" and w in ("clear", "good", "fine", "ok", "okay", "well"):
                 add("safe" if w == "clear" else "unharmed")  # ("All clear."; "all fine": how it left them)
+            if words == [w] and w in _FINE and ends_sentence and not clause.first_of_sentence:
+                add("unharmed")  # ("ego stops, ok.", "-> ok": a note's verdict after what happened)
             if _miss(words, i):
                 by = "by" in words[i + 1 : i + 5]  # ("missed my handlebars by this much": told by its margin)
                 add("contact" if _denied_before(words, i) and not by else "near")  # ("did not miss him")

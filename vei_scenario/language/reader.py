@@ -433,6 +433,37 @@ def _speller():
     )
 
 
+#: The slots whose single words may be written shortened ("e-scoot", "oncmg", "rdbt"): nouns of road
+#: users and places, and where one is. Not verbs: a shortened verb is most often its noun ("smooth decel").
+_SHORTENED_SLOTS = frozenset(("actor", "relation", "map", "arm", "kerb"))
+
+
+@lru_cache(maxsize=1)
+def _shorthand():
+    from vei_scenario.language.lemmas import english
+    from vei_scenario.language.shorthand import Shorthand
+
+    return Shorthand(
+        {
+            key[0]: meaning
+            for key, meaning in TABLE.items()
+            if len(key) == 1
+            and meaning[0] in _SHORTENED_SLOTS
+            and key[0] not in FUNCTION_WORDS
+            and english(key[0].rsplit("-", 1)[-1])  # (English words: "samokat" is no one's shorthand)
+        }
+    )
+
+
+def _written_in_lower_case(text: str) -> frozenset[str]:
+    """The words ``text`` writes only in lower case (a word also written with capitals may be a name or
+    an acronym: "Min", "ACC")."""
+    lower, other = set(), set()
+    for w in re.findall(r"[A-Za-z][A-Za-z-]*", text):
+        (lower if w.islower() else other).add(w.lower())
+    return frozenset(lower - other)
+
+
 @lru_cache(maxsize=64)
 def _normalised(text: str) -> str:
     """``text`` lowercased and normalised as :func:`_tokens` reads it (cached: a reading tokenises its
@@ -453,7 +484,7 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
     one slip from, unless ``spell`` is false or the text writes the word only with its own capital,
     a name: "Hanley Rd" is no "Harley"; brackets kept as words if ``brackets``)."""
     names = proper_names(text) if spell else frozenset()
-    text = _normalised(text)
+    raw, text = text, _normalised(text)
     out = []
     found = (_TOKEN_BRACKETS if brackets else _TOKEN).findall(text)
     for k, tok in enumerate(found):
@@ -475,6 +506,9 @@ def _tokens(text: str, spell: bool = True, brackets: bool = False) -> list[str]:
                 out.extend([word] if (word,) in TABLE else closed_compound(word, _single_kind))
     if spell:
         out = [tok if tok in names else _speller().correct(tok) for tok in out]
+        lower = _written_in_lower_case(raw)
+        known = _speller().words  # (a word the reader has, "four", shortens nothing)
+        out = [_shorthand().expand(tok) if tok in lower and tok not in known else tok for tok in out]
     out = lamps_not_signals(out, lambda w: w.isalpha() and w not in FUNCTION_WORDS)
     return own_vehicles(out, _kind_at, lambda w: w.isalpha() and w not in FUNCTION_WORDS and not _known([w], 0))
 
@@ -620,6 +654,17 @@ def _acts_at(tokens: list[str], i: int) -> bool:
 
 #: What may end a heading that names a crossing ("Mill Lane crossing.", "Station Road crossing, 8am:").
 _HEADING_ENDS = frozenset((".", ",", ":", ";", "!", "?", "-", "—"))
+
+
+#: Words after "a pedestrian crossing" that say where a person crosses, not what the crossing is.
+_WHERE_ONE_CROSSES = (["in"], ["from"], ["towards"], ["toward"], ["into"], ["against"], ["between"], ["behind"])
+
+
+def _struck_someone(verb: str) -> bool:
+    """Whether ``verb``, right before "a pedestrian crossing ...", is a verb of hitting, missing or
+    seeing someone ("struck", "hit", "saw"; not "there is a pedestrian crossing in front of the school")."""
+    said = {lemma for found in _lemmas(verb).values() for lemma in found}
+    return bool(said & {"strike", "hit", "miss", "see", "spot", "notice", "knock", "clip", "avoid"})
 
 
 def _crossing_named_as_a_place(tokens: list[str], i: int) -> bool:
@@ -861,6 +906,8 @@ def _number(
     at = at or ego_speed.speedometer_reading(tokens, i)  # ("60 on the speedo", "the speedo said 45")
     at = at or ego_speed.bare_owned(tokens, i) or Q.after_speed_head(tokens, i)  # ("than my 70", "speed: 50")
     at = at or ego_speed.cruise_setting(tokens, i)  # ("Cruise set to 100")
+    if at and _counted(nxt):
+        return "skip", value, 1  # ("Of 63 crossings observed, none ...": how many, no speed)
     if at and 3 <= value <= 250:
         # "at 120", "at a steady 50": in the unit said before
         return "speed", value * Q.carried_unit(tokens, i, imperial, metric, narrated), 1
@@ -891,6 +938,13 @@ def _another_occasion(tokens: list[str], i: int) -> bool:
     while k < len(tokens) and tokens[k] not in Q.NOTE_ENDS:
         k += 1
     return tokens[k - 1] in _ANOTHER_OCCASION or (k - i > 2 and tokens[k - 2] in _LAST)
+
+
+def _counted(word: str) -> bool:
+    """Whether ``word``, right after a bare number, is a plural noun the number counts ("63 crossings",
+    "about 40 vehicles"): units of speed and length are read before."""
+    found = _lemmas(word)
+    return word.endswith("s") and "NOUN" in found and word not in found["NOUN"]
 
 
 def _changes_speed_before(tokens: list[str], k: int) -> bool:
@@ -1109,6 +1163,11 @@ def _scan(text: str) -> tuple[list[tuple[str, list[_Mention]]], list[str], list,
             opens = opens or _someone_new_opens(tokens, i)  # ("Also one pedestrian crossing far ahead")
             # "A pedestrian crossing from the right ...", "also a pedestrian crossing the road" (its object)
             takes_object = tokens[i + len(key) : i + len(key) + 1] in (["the"], ["a"], ["an"], ["my"], ["our"])
+            # ("struck a pedestrian crossing in the crosswalk": where the person crosses)
+            struck = i > 1 and tokens[i - 1] in _DETERMINERS and _struck_someone(tokens[i - 2])
+            where = tokens[i + len(key) : i + len(key) + 1]  # (or a road's name: "crossing Broadway")
+            crosses = where in _WHERE_ONE_CROSSES or (where[:1] and where[0] in proper)
+            takes_object = takes_object or (struck and crosses)
             participle = last.endswith("ing") and (opens or takes_object)
             if prev not in _PLACE_PREPOSITIONS and (verb or participle):
                 key = key[:1]
@@ -3226,6 +3285,7 @@ def _read(text: str) -> Reading:
         phrase = phrase and not outside  # ("we are told ...": the writer, not an ego phrase)
         afoot = outside and narrator_outside.on_foot(scanned)  # ("I stepped off the kerb and a van went past me")
         actors = report_vehicle.merge_report_vehicle(actors, r, text, phrase, outside)  # ("a Fiesta driven by")
+        actors = report_vehicle.merge_threatened_vehicle(actors, r, text, phrase)  # ("cut in in front of the car")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")

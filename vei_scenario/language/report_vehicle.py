@@ -33,7 +33,7 @@ from __future__ import annotations
 import re
 
 from vei_scenario.language.discourse import VEHICLES, VULNERABLE
-from vei_scenario.language.ego_double import EGO_LIKE, NEW, take_as_ego, without_road_user
+from vei_scenario.language.ego_double import EGO_LIKE, IN_THE_PATH, NEW, take_as_ego, without_road_user
 from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: Braking: one ahead that brakes is the lead vehicle braking in front of the ego, a scenario of its own.
@@ -109,3 +109,37 @@ def merge_report_vehicle(
     if not reported(actors[k], specs[k], passing=True) or not take_as_ego(reading, k):
         return actors
     return without_road_user(actors, reading, k)
+
+
+#: The reader addressed: the ego ("you spotted it and eased off").
+_ADDRESSED = frozenset(("you", "your", "yourself"))
+#: What one motor vehicle does to another it threatens, besides putting itself in its path.
+_THREATENS = IN_THE_PATH | {"overtake", "follow_vehicle"}
+
+
+def merge_threatened_vehicle(actors: list, reading: Reading, text: str, ego_phrase: bool = False) -> list:
+    """Take out of ``reading`` the motor vehicle that a report with no narrator tells another motor
+    vehicle threatening ("a white van was observed following a car ..., passed the car and cut back in
+    in front of it, forcing the car driver to brake", "a sedan ran the red into the path of a pickup;
+    the pickup braked"): two vehicles move, one does only what the ego does (goes on, slows, brakes,
+    stops) and is the object of the other's verb, which puts itself in its way, passes or follows it.
+    The report is told about the one threatened, the ego; the other is the road user. ``actors`` are
+    what the reader gathered of its road users, in the same order; ``ego_phrase``: a phrase names the
+    ego, and neither is it. Returns ``actors`` without the one taken."""
+    specs = reading.actors
+    if ego_phrase or (_NARRATOR | _ADDRESSED) & set(re.findall(r"[a-z]+", text.lower())):
+        return actors  # (a narrator, or "you", names the ego: "you sat in lane 2 after overtaking the lorry")
+    movers = [k for k, s in enumerate(specs) if s.kind in VEHICLES and not stands_there(s)]
+    if len(movers) != 2 or any(s.kind not in VULNERABLE for j, s in enumerate(specs) if j not in movers):
+        return actors
+    for k, other in (movers, movers[::-1]):
+        a, threat = actors[k], actors[other]
+        if (
+            a.object_of is threat
+            and _names(specs[k]) <= EGO_LIKE
+            and _names(specs[other]) & _THREATENS
+            and not (a.parked or a.stationary or a.hides or a.seen or a.group)
+            and take_as_ego(reading, k)
+        ):
+            return without_road_user(actors, reading, k)
+    return actors
