@@ -12,6 +12,10 @@ apart, and stay road users). It leaves the road users only when it does nothing 
 goes along, goes on or stands: nothing of its own crosses, cuts in or comes out) and another road
 user, not a crowd, acts beside it; a crowd alone ("kids walking along the road in the dark") is what
 the description is about, and stays.
+
+Road users counted by a number no scenario holds ("212 vehicles turned in and no conflicts were
+recorded", "of 63 cyclists observed") are a count of traffic, a survey's figure: they leave the road
+users whatever they are read doing, once another road user acts beside them.
 """
 
 from __future__ import annotations
@@ -57,6 +61,38 @@ def _crowd(a: _Named, spec: ActorSpec) -> bool:
         and not a.member_named
         and {b[0] for b in spec.behaviours} <= _ONLY_THERE
     )
+
+
+#: More road users than a scenario holds: a number counting them is a statistic ("212 vehicles").
+_MOST = 8
+
+
+class _Placed(Protocol):
+    word: str
+    named_end: int
+
+
+def _statistic(a: _Placed, scanned: list[str]) -> bool:
+    """Whether road user ``a`` is first named by a plural noun right after a number greater than a
+    scenario holds ("212 vehicles", "63 cyclists")."""
+    words = a.word.split()
+    start = a.named_end - len(words)
+    if not words or a.named_end < 0 or start < 1 or not many(words[-1]):
+        return False
+    number = scanned[start - 1].replace(",", "")
+    return number.isdigit() and int(number) > _MOST
+
+
+def drop_counts(actors: list, reading: Reading, scanned: list[str]) -> list:
+    """``actors`` and ``reading``'s road users without those named only as a count of traffic (see the
+    module), when another road user acts beside them; ``scanned``: the words the reader scanned."""
+    counts = [k for k, a in enumerate(actors) if _statistic(a, scanned)]
+    acting = [s for k, s in enumerate(reading.actors) if k not in counts and not stands_there(s)]
+    if not counts or not acting or any(s.obstacle in counts for s in reading.actors):
+        return actors
+    for k in reversed(counts):
+        actors = without_road_user(actors, reading, k)
+    return actors
 
 
 def drop_crowds(actors: list, reading: Reading) -> list:

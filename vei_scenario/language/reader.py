@@ -3288,6 +3288,7 @@ def _read(text: str) -> Reading:
         actors = report_vehicle.merge_threatened_vehicle(actors, r, text, phrase)  # ("cut in in front of the car")
     actors = ego_double.drop_both_said_again(actors, r)  # ("a van cut the corner. Both drivers braked hard")
     actors = crowds.drop_crowds(actors, r)  # ("there were kids everywhere, and a cyclist pulled out")
+    actors = crowds.drop_counts(actors, r, scanned)  # ("212 vehicles turned in and no conflicts were recorded")
     actors = kind_in_general.drop_kinds_in_general(actors, r, scanned)  # ("e-scooters are a menace. A rider shot out")
     actors = narrator_ride.drop_narrators_ride(actors, r, scanned, _kind_at)  # ("I was on one of your e-scooters")
     actors = writer_on_foot.the_writer_met(actors, r, scanned, afoot)  # ("I stepped out and a taxi went past me")

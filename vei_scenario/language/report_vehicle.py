@@ -38,6 +38,8 @@ from vei_scenario.language.reading import ActorSpec, Reading, stands_there
 
 #: Braking: one ahead that brakes is the lead vehicle braking in front of the ego, a scenario of its own.
 _BRAKING = frozenset(("sudden_stop", "stop", "change_speed"))
+#: Moving out to pass and back in: part of a pass ("moved fully into the right lane and passed the rider").
+_MOVING_OUT = frozenset(("change_lane",))
 #: Only going on: what road users listed together do where none of them meets another.
 _GOING_ON = frozenset(("keep_going", "change_speed"))
 #: Going past: what the ego does going on past a walker who writes.
@@ -56,8 +58,8 @@ def reported(a, spec: ActorSpec, passing: bool = False) -> bool:
     that goes past no one named or a walker or rider ("went past me", "overtook the cyclist") is the
     ego going on past them: among walkers and riders, the one vehicle that passes passes one of them."""
     names = {b[0] for b in spec.behaviours}
-    if passing and (a.object_of is None or a.object_of.kind in VULNERABLE):
-        names -= _PASSING  # ("a van came past me", "a van overtook the cyclist": the ego going on past them)
+    if passing and names & _PASSING and (a.object_of is None or a.object_of.kind in VULNERABLE):
+        names -= _PASSING | _MOVING_OUT  # ("a van overtook the cyclist": the ego going on past them, out and back)
     return (
         spec.kind in VEHICLES
         and names <= EGO_LIKE
@@ -108,7 +110,16 @@ def merge_report_vehicle(
         return actors  # ("The VUT drives at 50 km/h. A car travelling at 60 km/h ...": someone else)
     if not reported(actors[k], specs[k], passing=True) or not take_as_ego(reading, k):
         return actors
+    _own_speed(reading, specs[k])
     return without_road_user(actors, reading, k)
+
+
+def _own_speed(reading: Reading, taken: ActorSpec) -> None:
+    """The speed said of the vehicle the report is about is the ego's, over one the reading took from
+    the road's limit or the scene ("two lanes each way, 60 km/h zone ... passed the rider at about 50
+    km/h": 50)."""
+    if taken.speed_mps is not None and taken.speed_mps > 0.0:
+        reading.ego_speed_mps = taken.speed_mps
 
 
 #: The reader addressed: the ego ("you spotted it and eased off").
@@ -121,8 +132,9 @@ def merge_threatened_vehicle(actors: list, reading: Reading, text: str, ego_phra
     """Take out of ``reading`` the motor vehicle that a report with no narrator tells another motor
     vehicle threatening ("a white van was observed following a car ..., passed the car and cut back in
     in front of it, forcing the car driver to brake", "a sedan ran the red into the path of a pickup;
-    the pickup braked"): two vehicles move, one does only what the ego does (goes on, slows, brakes,
-    stops) and is the object of the other's verb, which puts itself in its way, passes or follows it.
+    the pickup braked"): two vehicles move, one does only what the ego does and reacts (slows, brakes,
+    stops) and is the object of the other's verb, which puts itself in its way, passes or follows it
+    ("an oncoming van overtook a slow lorry" tells of neither: no one reacts).
     The report is told about the one threatened, the ego; the other is the road user. ``actors`` are
     what the reader gathered of its road users, in the same order; ``ego_phrase``: a phrase names the
     ego, and neither is it. Returns ``actors`` without the one taken."""
@@ -137,9 +149,11 @@ def merge_threatened_vehicle(actors: list, reading: Reading, text: str, ego_phra
         if (
             a.object_of is threat
             and _names(specs[k]) <= EGO_LIKE
+            and _names(specs[k]) & _BRAKING  # (it reacts: "forcing the car driver to brake")
             and _names(specs[other]) & _THREATENS
             and not (a.parked or a.stationary or a.hides or a.seen or a.group)
             and take_as_ego(reading, k)
         ):
+            _own_speed(reading, specs[k])
             return without_road_user(actors, reading, k)
     return actors
